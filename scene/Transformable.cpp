@@ -1,0 +1,167 @@
+#include <m3g/Transformable.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include <m3g/AnimationTrack.h>
+
+#include "Check.h"
+#include "MathUtil.h"
+
+namespace m3g {
+
+namespace {
+glm::quat toGlmQuat(const std::array<float, 4>& q) { return glm::quat(q[3], q[0], q[1], q[2]); }
+
+glm::quat axisAngleOrThrow(float angle, float ax, float ay, float az, const char* where) {
+    glm::quat q;
+    if (!detail::quatFromAxisAngle(angle, ax, ay, az, q))
+        throw IllegalArgumentException(
+            detail::str(where, ": rotation axis is (0, 0, 0) with angle ", angle, " (axis must be non-zero)"));
+    return q;
+}
+}  // namespace
+
+Transformable::Transformable() = default;
+
+void Transformable::setOrientationQuat(float qx, float qy, float qz, float qw) noexcept {
+    const float len = std::sqrt(qx * qx + qy * qy + qz * qz + qw * qw);
+    if (len > 0.0f && std::isfinite(len))
+        q_ = {qx / len, qy / len, qz / len, qw / len};
+    else
+        q_ = {0, 0, 0, 1};
+    transformChanged();
+}
+
+void Transformable::setOrientation(float angle, float ax, float ay, float az) {
+    const glm::quat q = axisAngleOrThrow(angle, ax, ay, az, "Transformable::setOrientation");
+    setOrientationQuat(q.x, q.y, q.z, q.w);
+}
+
+void Transformable::postRotate(float angle, float ax, float ay, float az) {
+    const glm::quat r = toGlmQuat(q_) * axisAngleOrThrow(angle, ax, ay, az, "Transformable::postRotate");
+    setOrientationQuat(r.x, r.y, r.z, r.w);
+}
+
+void Transformable::preRotate(float angle, float ax, float ay, float az) {
+    const glm::quat r = axisAngleOrThrow(angle, ax, ay, az, "Transformable::preRotate") * toGlmQuat(q_);
+    setOrientationQuat(r.x, r.y, r.z, r.w);
+}
+
+void Transformable::getOrientation(std::span<float> angleAxis) const {
+    detail::requireArray(angleAxis, 4, "Transformable::getOrientation", "angleAxis");
+    // q = (sin(a/2) n, cos(a/2)); the identity reports angle 0 about (0, 0, 0)
+    // as Nokia's core does.
+    const float w = std::clamp(q_[3], -1.0f, 1.0f);
+    const float s = std::sqrt(std::max(0.0f, 1.0f - w * w));
+    if (s < 1e-6f) {
+        angleAxis[0] = 0.0f;
+        angleAxis[1] = angleAxis[2] = angleAxis[3] = 0.0f;
+        return;
+    }
+    angleAxis[0] = glm::degrees(2.0f * std::acos(w));
+    angleAxis[1] = q_[0] / s;
+    angleAxis[2] = q_[1] / s;
+    angleAxis[3] = q_[2] / s;
+}
+
+void Transformable::setScale(float sx, float sy, float sz) {
+    s_ = {sx, sy, sz};
+    transformChanged();
+}
+
+void Transformable::scale(float sx, float sy, float sz) {
+    s_[0] *= sx;
+    s_[1] *= sy;
+    s_[2] *= sz;
+    transformChanged();
+}
+
+void Transformable::getScale(std::span<float> xyz) const {
+    detail::requireArray(xyz, 3, "Transformable::getScale", "xyz");
+    for (int i = 0; i < 3; ++i) xyz[i] = s_[i];
+}
+
+void Transformable::setTranslation(float tx, float ty, float tz) {
+    t_ = {tx, ty, tz};
+    transformChanged();
+}
+
+void Transformable::translate(float tx, float ty, float tz) {
+    t_[0] += tx;
+    t_[1] += ty;
+    t_[2] += tz;
+    transformChanged();
+}
+
+void Transformable::getTranslation(std::span<float> xyz) const {
+    detail::requireArray(xyz, 3, "Transformable::getTranslation", "xyz");
+    for (int i = 0; i < 3; ++i) xyz[i] = t_[i];
+}
+
+void Transformable::setTransform(const Transform* transform) {
+    if (!transform) {
+        m_.setIdentity();
+        hasM_ = false;
+        transformChanged();
+        return;
+    }
+    if (requiresAffineTransform() &&
+        (transform->at(3, 0) != 0.0f || transform->at(3, 1) != 0.0f || transform->at(3, 2) != 0.0f ||
+         transform->at(3, 3) != 1.0f))
+        throw IllegalArgumentException(detail::str(
+            getClassName(), "::setTransform: bottom row (", transform->at(3, 0), ", ", transform->at(3, 1), ", ",
+            transform->at(3, 2), ", ", transform->at(3, 3), ") must be (0, 0, 0, 1) for a Node"));
+    m_ = *transform;
+    hasM_ = !(m_ == Transform());
+    transformChanged();
+}
+
+void Transformable::getTransform(Transform* transform) const {
+    detail::requireNonNull(transform, "Transformable::getTransform", "transform");
+    *transform = m_;
+}
+
+void Transformable::getCompositeTransform(Transform* transform) const {
+    detail::requireNonNull(transform, "Transformable::getCompositeTransform", "transform");
+    *transform = compositeTransform();
+}
+
+Transform Transformable::compositeTransform() const noexcept {
+    // T R S: rotation columns scaled by S, translation in the last column.
+    const glm::mat4 r = detail::quatToMatrix(toGlmQuat(q_));
+    std::array<float, 16> rows{};
+    for (int row = 0; row < 3; ++row) {
+        for (int c = 0; c < 3; ++c) rows[row * 4 + c] = r[c][row] * s_[c];
+        rows[row * 4 + 3] = t_[row];
+    }
+    rows[15] = 1.0f;
+    Transform trs = Transform::fromRows(rows);
+    return hasM_ ? trs * m_ : trs;
+}
+
+bool Transformable::isAnimatable(int property) const noexcept {
+    return property == AnimationTrack::ORIENTATION || property == AnimationTrack::SCALE ||
+           property == AnimationTrack::TRANSLATION || Object3D::isAnimatable(property);
+}
+
+void Transformable::updateProperty(int property, std::span<const float> v) {
+    switch (property) {
+    case AnimationTrack::ORIENTATION:
+        setOrientationQuat(v[0], v[1], v[2], v[3]);
+        return;
+    case AnimationTrack::SCALE:
+        if (v.size() >= 3)
+            setScale(v[0], v[1], v[2]);
+        else
+            setScale(v[0], v[0], v[0]);
+        return;
+    case AnimationTrack::TRANSLATION:
+        setTranslation(v[0], v[1], v[2]);
+        return;
+    default:
+        Object3D::updateProperty(property, v);
+    }
+}
+
+}  // namespace m3g
