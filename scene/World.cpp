@@ -9,6 +9,7 @@ namespace m3g {
 
 World::World() = default;
 World::~World() = default;
+World::World(const World& other) : Group(other), activeCamera_(other.activeCamera_), background_(other.background_) {}
 
 void World::setActiveCamera(Camera* camera) {
     detail::requireNonNull(camera, "World::setActiveCamera", "camera");

@@ -4,6 +4,7 @@
 #include <array>
 #include <span>
 
+#include <m3g/Exception.h>
 #include <m3g/Forward.h>
 
 namespace m3g {

@@ -1,6 +1,8 @@
 // javax.microedition.m3g.World (spec digest §4.5).
 #pragma once
 
+#include <m3g/Background.h>
+#include <m3g/Camera.h>
 #include <m3g/Group.h>
 
 namespace m3g {
@@ -22,7 +24,7 @@ public:
     const char* getClassName() const noexcept override { return "World"; }
 
 protected:
-    World(const World& other) = default;
+    World(const World& other);
     /// Order: alignment references, children, active camera, background.
     void collectReferences(std::vector<Object3D*>& out) const override;
     Object3D* duplicateImpl(DuplicateMap& map) const override;

@@ -1,0 +1,346 @@
+// Transformable, Node and Group semantics (spec digest §4.2-4.5, §5.1, §5.2).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <m3g/AnimationTrack.h>
+#include <m3g/Group.h>
+#include <m3g/World.h>
+
+using namespace m3g;
+
+namespace {
+void expectPoint(const Transform& t, std::array<float, 3> p, std::array<float, 3> expected, float eps = 1e-5f) {
+    std::array<float, 4> v{p[0], p[1], p[2], 1};
+    t.transform(v);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(v[i], expected[i], eps) << "component " << i;
+}
+}  // namespace
+
+TEST(Transformable, Defaults) {
+    Ref<Group> g = make<Group>();
+    float t[3], s[3], o[4];
+    g->getTranslation(t);
+    g->getScale(s);
+    g->getOrientation(o);
+    EXPECT_EQ(t[0], 0); EXPECT_EQ(t[1], 0); EXPECT_EQ(t[2], 0);
+    EXPECT_EQ(s[0], 1); EXPECT_EQ(s[1], 1); EXPECT_EQ(s[2], 1);
+    EXPECT_EQ(o[0], 0);
+    Transform m;
+    m.postScale(3, 3, 3);
+    g->getTransform(&m);
+    EXPECT_TRUE(m == Transform());
+}
+
+TEST(Transformable, TranslateAndScaleAccumulate) {
+    Ref<Group> g = make<Group>();
+    g->setTranslation(1, 2, 3);
+    g->translate(1, 1, 1);
+    g->setScale(2, 3, 4);
+    g->scale(2, 2, 0.5f);
+    float t[3], s[3];
+    g->getTranslation(t);
+    g->getScale(s);
+    EXPECT_EQ(t[0], 2); EXPECT_EQ(t[1], 3); EXPECT_EQ(t[2], 4);
+    EXPECT_EQ(s[0], 4); EXPECT_EQ(s[1], 6); EXPECT_EQ(s[2], 2);
+}
+
+TEST(Transformable, OrientationRoundTrip) {
+    Ref<Group> g = make<Group>();
+    g->setOrientation(60, 0, 0, 2);
+    float o[4];
+    g->getOrientation(o);
+    EXPECT_NEAR(o[0], 60, 1e-4);
+    EXPECT_NEAR(o[1], 0, 1e-6);
+    EXPECT_NEAR(o[2], 0, 1e-6);
+    EXPECT_NEAR(o[3], 1, 1e-6);
+    g->postRotate(30, 0, 0, 1);
+    g->getOrientation(o);
+    EXPECT_NEAR(o[0], 90, 1e-4);
+    g->preRotate(-90, 0, 0, 1);
+    g->getOrientation(o);
+    EXPECT_NEAR(o[0], 0, 1e-3);
+}
+
+TEST(Transformable, ArgumentChecks) {
+    Ref<Group> g = make<Group>();
+    EXPECT_THROW(g->setOrientation(10, 0, 0, 0), IllegalArgumentException);
+    EXPECT_THROW(g->postRotate(10, 0, 0, 0), IllegalArgumentException);
+    EXPECT_THROW(g->preRotate(10, 0, 0, 0), IllegalArgumentException);
+    EXPECT_NO_THROW(g->setOrientation(0, 0, 0, 0));
+    float two[2];
+    EXPECT_THROW(g->getOrientation(two), IllegalArgumentException);
+    EXPECT_THROW(g->getScale(two), IllegalArgumentException);
+    EXPECT_THROW(g->getTranslation(two), IllegalArgumentException);
+    EXPECT_THROW(g->getTranslation(std::span<float>()), NullPointerException);
+    EXPECT_THROW(g->getTransform(nullptr), NullPointerException);
+    EXPECT_THROW(g->getCompositeTransform(nullptr), NullPointerException);
+}
+
+TEST(Transformable, NodeRejectsProjectiveMatrix) {
+    Ref<Group> g = make<Group>();
+    Transform p;
+    p.at(3, 2) = -1;
+    EXPECT_THROW(g->setTransform(&p), IllegalArgumentException);
+    Transform ok;
+    ok.postTranslate(1, 2, 3);
+    g->setTransform(&ok);
+    g->setTransform(nullptr);  // resets M
+    Transform m;
+    g->getTransform(&m);
+    EXPECT_TRUE(m == Transform());
+}
+
+TEST(Transformable, CompositeIsTRSM) {
+    // C = T(10,0,0) * Rz(90) * S(2,1,1) * M(translate 0,1,0):
+    // p = (1,0,0): M -> (1,1,0); S -> (2,1,0); Rz90 -> (-1,2,0); T -> (9,2,0).
+    Ref<Group> g = make<Group>();
+    g->setTranslation(10, 0, 0);
+    g->setOrientation(90, 0, 0, 1);
+    g->setScale(2, 1, 1);
+    Transform m;
+    m.postTranslate(0, 1, 0);
+    g->setTransform(&m);
+    Transform c;
+    g->getCompositeTransform(&c);
+    expectPoint(c, {1, 0, 0}, {9, 2, 0});
+}
+
+TEST(Node, Defaults) {
+    Ref<Group> g = make<Group>();
+    EXPECT_TRUE(g->isRenderingEnabled());
+    EXPECT_TRUE(g->isPickingEnabled());
+    EXPECT_EQ(g->getAlphaFactor(), 1.0f);
+    EXPECT_EQ(g->getScope(), -1);
+    EXPECT_EQ(g->getParent(), nullptr);
+    EXPECT_EQ(g->getAlignmentTarget(Node::Z_AXIS), Node::NONE);
+    EXPECT_EQ(g->getAlignmentTarget(Node::Y_AXIS), Node::NONE);
+    EXPECT_EQ(g->getAlignmentReference(Node::Z_AXIS), nullptr);
+}
+
+TEST(Node, SettersAndChecks) {
+    Ref<Group> g = make<Group>();
+    g->setAlphaFactor(0.25f);
+    EXPECT_EQ(g->getAlphaFactor(), 0.25f);
+    EXPECT_THROW(g->setAlphaFactor(-0.01f), IllegalArgumentException);
+    EXPECT_THROW(g->setAlphaFactor(1.01f), IllegalArgumentException);
+    EXPECT_THROW(g->setAlphaFactor(NAN), IllegalArgumentException);
+    g->setRenderingEnable(false);
+    g->setPickingEnable(false);
+    g->setScope(0x10);
+    EXPECT_FALSE(g->isRenderingEnabled());
+    EXPECT_FALSE(g->isPickingEnabled());
+    EXPECT_EQ(g->getScope(), 0x10);
+    EXPECT_THROW(g->getAlignmentTarget(Node::X_AXIS), IllegalArgumentException);
+    EXPECT_THROW(g->getAlignmentReference(Node::ORIGIN), IllegalArgumentException);
+}
+
+TEST(Node, SetAlignmentChecks) {
+    Ref<Group> root = make<Group>();
+    Ref<Group> a = make<Group>(), b = make<Group>();
+    root->addChild(a);
+    root->addChild(b);
+    EXPECT_THROW(a->setAlignment(b, 999, nullptr, Node::NONE), IllegalArgumentException);
+    EXPECT_THROW(a->setAlignment(b, Node::ORIGIN, nullptr, 143), IllegalArgumentException);
+    EXPECT_THROW(a->setAlignment(a, Node::ORIGIN, nullptr, Node::NONE), IllegalArgumentException);
+    EXPECT_THROW(a->setAlignment(b, Node::Z_AXIS, b, Node::Z_AXIS), IllegalArgumentException);
+    EXPECT_THROW(a->setAlignment(nullptr, Node::ORIGIN, nullptr, Node::ORIGIN), IllegalArgumentException);
+    a->setAlignment(b, Node::ORIGIN, b, Node::Y_AXIS);
+    EXPECT_EQ(a->getAlignmentReference(Node::Z_AXIS), b);
+    EXPECT_EQ(a->getAlignmentTarget(Node::Y_AXIS), Node::Y_AXIS);
+    // A reference with target NONE is discarded.
+    a->setAlignment(b, Node::NONE, b, Node::Y_AXIS);
+    EXPECT_EQ(a->getAlignmentReference(Node::Z_AXIS), nullptr);
+    EXPECT_EQ(a->getAlignmentReference(Node::Y_AXIS), b);
+}
+
+TEST(Node, AlignZToOrigin) {
+    // Node at (0,0,0) with its Z axis aimed at a target at (0,10,0): +Z must
+    // map to +Y in parent space.
+    Ref<Group> root = make<Group>();
+    Ref<Group> n = make<Group>(), target = make<Group>();
+    root->addChild(n);
+    root->addChild(target);
+    target->setTranslation(0, 10, 0);
+    n->setAlignment(target, Node::ORIGIN, nullptr, Node::NONE);
+    n->align(nullptr);
+    Transform c;
+    n->getCompositeTransform(&c);
+    std::array<float, 4> z{0, 0, 1, 0};
+    c.transform(z);
+    EXPECT_NEAR(z[0], 0, 1e-5);
+    EXPECT_NEAR(z[1], 1, 1e-5);
+    EXPECT_NEAR(z[2], 0, 1e-5);
+}
+
+TEST(Node, AlignZThenYKeepsZExact) {
+    // Z to the reference's origin at (10,0,0) (so +Z -> +X), Y towards the
+    // reference's Y axis (0,1,0): +Y must stay +Y, +X must become -Z.
+    Ref<Group> root = make<Group>();
+    Ref<Group> n = make<Group>(), ref = make<Group>();
+    root->addChild(n);
+    root->addChild(ref);
+    ref->setTranslation(10, 0, 0);
+    n->setAlignment(ref, Node::ORIGIN, ref, Node::Y_AXIS);
+    n->align(nullptr);
+    Transform c;
+    n->getCompositeTransform(&c);
+    std::array<float, 12> axes{0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 0};
+    c.transform(axes);
+    EXPECT_NEAR(axes[0], 1, 1e-5);   // Z -> +X
+    EXPECT_NEAR(axes[5], 1, 1e-5);   // Y -> +Y
+    EXPECT_NEAR(axes[10], -1, 1e-5); // X -> -Z
+}
+
+TEST(Node, AlignNullReferenceResolvesToArgument) {
+    Ref<Group> root = make<Group>();
+    Ref<Group> n = make<Group>(), cam = make<Group>();
+    root->addChild(n);
+    root->addChild(cam);
+    cam->setTranslation(0, 0, -5);
+    n->setAlignment(nullptr, Node::ORIGIN, nullptr, Node::NONE);
+    EXPECT_THROW(n->align(nullptr), IllegalStateException);
+    n->align(cam);
+    Transform c;
+    n->getCompositeTransform(&c);
+    std::array<float, 4> z{0, 0, 1, 0};
+    c.transform(z);
+    EXPECT_NEAR(z[2], -1, 1e-5);
+}
+
+TEST(Node, AlignExceptions) {
+    Ref<Group> root = make<Group>(), other = make<Group>();
+    Ref<Group> n = make<Group>(), child = make<Group>();
+    root->addChild(n);
+    n->addChild(child);
+    EXPECT_THROW(n->align(other), IllegalArgumentException);  // other scene graph
+    n->setAlignment(child, Node::ORIGIN, nullptr, Node::NONE);
+    EXPECT_THROW(n->align(nullptr), IllegalStateException);   // reference is a descendant
+    n->setAlignment(other, Node::ORIGIN, nullptr, Node::NONE);
+    EXPECT_THROW(n->align(nullptr), IllegalStateException);   // reference in another graph
+}
+
+TEST(Node, GetTransformToHandComputed) {
+    // root -> a (translate 1,0,0) -> b (scale 2); root -> c (translate 0,5,0).
+    // b->c maps p to T(0,-5,0) T(1,0,0) S(2) p.
+    Ref<Group> root = make<Group>(), a = make<Group>(), b = make<Group>(), c = make<Group>();
+    root->addChild(a);
+    a->addChild(b);
+    root->addChild(c);
+    a->setTranslation(1, 0, 0);
+    b->setScale(2, 2, 2);
+    c->setTranslation(0, 5, 0);
+    Transform t;
+    ASSERT_TRUE(b->getTransformTo(c, &t));
+    expectPoint(t, {1, 1, 1}, {3, -3, 2});
+    ASSERT_TRUE(c->getTransformTo(b, &t));
+    expectPoint(t, {3, -3, 2}, {1, 1, 1});
+    ASSERT_TRUE(b->getTransformTo(b, &t));
+    EXPECT_TRUE(t == Transform());
+}
+
+TEST(Node, GetTransformToOtherGraphAndErrors) {
+    Ref<Group> a = make<Group>(), b = make<Group>();
+    Transform t;
+    t.postScale(7, 7, 7);
+    const Transform before = t;
+    EXPECT_FALSE(a->getTransformTo(b, &t));
+    EXPECT_TRUE(t == before);
+    EXPECT_THROW(a->getTransformTo(nullptr, &t), NullPointerException);
+    EXPECT_THROW(a->getTransformTo(b, nullptr), NullPointerException);
+    Ref<Group> root = make<Group>();
+    root->addChild(a);
+    root->addChild(b);
+    b->setScale(0, 1, 1);
+    EXPECT_THROW(a->getTransformTo(b, &t), ArithmeticException);
+}
+
+TEST(Node, AnimatedPropertiesUseSetterSemantics) {
+    Ref<Group> g = make<Group>();
+    EXPECT_TRUE(g->isAnimatable(AnimationTrack::ALPHA));
+    EXPECT_TRUE(g->isAnimatable(AnimationTrack::ORIENTATION));
+    EXPECT_FALSE(g->isAnimatable(AnimationTrack::FIELD_OF_VIEW));
+    const float big[] = {1.5f};
+    g->updateProperty(AnimationTrack::ALPHA, big);
+    EXPECT_EQ(g->getAlphaFactor(), 1.0f);
+    const float low[] = {0.49f};
+    g->updateProperty(AnimationTrack::VISIBILITY, low);
+    EXPECT_FALSE(g->isRenderingEnabled());
+    const float half[] = {0.5f};
+    g->updateProperty(AnimationTrack::PICKABILITY, half);
+    EXPECT_TRUE(g->isPickingEnabled());
+    const float uniform[] = {3.0f};
+    g->updateProperty(AnimationTrack::SCALE, uniform);
+    float s[3];
+    g->getScale(s);
+    EXPECT_EQ(s[0], 3); EXPECT_EQ(s[1], 3); EXPECT_EQ(s[2], 3);
+    const float q[] = {0, 0, 2, 0};  // unnormalised 180 degrees about Z
+    g->updateProperty(AnimationTrack::ORIENTATION, q);
+    float o[4];
+    g->getOrientation(o);
+    EXPECT_NEAR(o[0], 180, 1e-3);
+    EXPECT_NEAR(o[3], 1, 1e-5);
+}
+
+TEST(Group, AddRemoveChildren) {
+    Ref<Group> g = make<Group>();
+    Ref<Group> a = make<Group>(), b = make<Group>();
+    g->addChild(a);
+    g->addChild(b);
+    g->addChild(a);  // re-adding is a no-op
+    ASSERT_EQ(g->getChildCount(), 2);
+    EXPECT_EQ(g->getChild(0), a);
+    EXPECT_EQ(g->getChild(1), b);
+    EXPECT_EQ(a->getParent(), g);
+    EXPECT_THROW(g->getChild(2), IndexOutOfBoundsException);
+    EXPECT_THROW(g->getChild(-1), IndexOutOfBoundsException);
+    g->removeChild(a);
+    EXPECT_EQ(g->getChildCount(), 1);
+    EXPECT_EQ(a->getParent(), nullptr);
+    g->removeChild(a);        // not a child: ignored
+    g->removeChild(nullptr);  // ignored
+    EXPECT_EQ(g->getChildCount(), 1);
+}
+
+TEST(Group, AddChildChecks) {
+    Ref<Group> g = make<Group>(), other = make<Group>(), child = make<Group>();
+    EXPECT_THROW(g->addChild(nullptr), NullPointerException);
+    EXPECT_THROW(g->addChild(g), IllegalArgumentException);
+    EXPECT_THROW(g->addChild(make<World>()), IllegalArgumentException);
+    other->addChild(child);
+    EXPECT_THROW(g->addChild(child), IllegalArgumentException);  // different parent
+    g->addChild(other);
+    Ref<Group> grandchild = make<Group>();
+    child->addChild(grandchild);
+    EXPECT_THROW(grandchild->addChild(g), IllegalArgumentException);  // ancestor: cycle
+}
+
+TEST(Group, ChildOutlivesGroup) {
+    Ref<Group> child = make<Group>();
+    {
+        Ref<Group> g = make<Group>();
+        g->addChild(child);
+        EXPECT_EQ(child->getRefCount(), 2);
+    }
+    EXPECT_EQ(child->getParent(), nullptr);
+    EXPECT_EQ(child->getRefCount(), 1);
+}
+
+TEST(Group, ReparentingMovesChild) {
+    Ref<Group> g1 = make<Group>(), g2 = make<Group>(), c = make<Group>();
+    g1->addChild(c);
+    g1->removeChild(c);
+    g2->addChild(c);
+    EXPECT_EQ(c->getParent(), g2);
+    EXPECT_EQ(g1->getChildCount(), 0);
+    EXPECT_EQ(c->getRefCount(), 2);
+}
+
+TEST(World, ActiveCameraAndBackgroundDefaults) {
+    Ref<World> w = make<World>();
+    EXPECT_EQ(w->getActiveCamera(), nullptr);
+    EXPECT_EQ(w->getBackground(), nullptr);
+    EXPECT_THROW(w->setActiveCamera(nullptr), NullPointerException);
+    w->setBackground(nullptr);
+    EXPECT_EQ(w->getBackground(), nullptr);
+}
