@@ -1,0 +1,118 @@
+// javax.microedition.m3g.Graphics3D: the rendering context singleton
+// (spec digest §4.26, §9). This header holds the state, the properties and
+// the target binding rules; drawing is recorded by the Vulkan renderer.
+#pragma once
+
+#include <map>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <m3g/Camera.h>
+#include <m3g/Graphics.h>
+#include <m3g/Image2D.h>
+#include <m3g/Light.h>
+#include <m3g/Limits.h>
+#include <m3g/Transform.h>
+
+namespace m3g {
+
+class Graphics3D {
+public:
+    static constexpr int ANTIALIAS = 2;
+    static constexpr int DITHER = 4;
+    static constexpr int TRUE_COLOR = 8;
+    static constexpr int OVERWRITE = 16;  // M3G 1.1
+
+    /// A property value: Boolean, Integer or String as in the Java Hashtable.
+    using Property = std::variant<bool, int, std::string>;
+
+    /// The process-wide instance.
+    static Graphics3D* getInstance();
+    /// The implementation properties (spec §4.26 keys plus "m3gRelease").
+    static std::map<std::string, Property> getProperties();
+
+    /// bindTarget(target, true, 0).
+    void bindTarget(Graphics* target) { bindTarget(target, true, 0); }
+    void bindTarget(Image2D* target) { bindTarget(target, true, 0); }
+    /// Binds a Graphics surface. ISE if a target is bound; NPE if null; IAE if
+    /// `hints` has bits other than ANTIALIAS|DITHER|TRUE_COLOR|OVERWRITE or the
+    /// surface is larger than maxViewportWidth x maxViewportHeight. Resets the
+    /// viewport to the clip rectangle (translated coordinates).
+    void bindTarget(Graphics* target, bool depthBuffer, int hints);
+    /// Binds a mutable RGB or RGBA Image2D. As above, plus IAE if the image is
+    /// immutable or of another format. Resets the viewport to the whole image.
+    void bindTarget(Image2D* target, bool depthBuffer, int hints);
+    /// Unbinds (after flushing rendering to the target); no-op if unbound.
+    void releaseTarget();
+    /// The bound Graphics or Image2D, or null.
+    Ref<RefCounted> getTarget() const noexcept { return target_; }
+    /// The hints given to bindTarget (0 when unbound).
+    int getHints() const noexcept { return hints_; }
+    bool isDepthBufferEnabled() const noexcept { return depthBuffer_; }
+
+    /// IAE unless 0 < width <= maxViewportWidth and 0 < height <= maxViewportHeight.
+    void setViewport(int x, int y, int width, int height);
+    int getViewportX() const noexcept { return viewport_[0]; }
+    int getViewportY() const noexcept { return viewport_[1]; }
+    int getViewportWidth() const noexcept { return viewport_[2]; }
+    int getViewportHeight() const noexcept { return viewport_[3]; }
+
+    /// Both in [0, 1], else IAE (near > far is allowed).
+    void setDepthRange(float near, float far);
+    float getDepthRangeNear() const noexcept { return depthNear_; }
+    float getDepthRangeFar() const noexcept { return depthFar_; }
+
+    /// Camera for render(Node) and immediate mode; `transform` is
+    /// camera-to-world (null = identity). ArithmeticException if singular.
+    void setCamera(Camera* camera, const Transform* transform);
+    /// The current camera; fills `transform` (if non-null) with its transform.
+    Ref<Camera> getCamera(Transform* transform) const;
+
+    /// Appends a light with its light-to-world transform (null = identity);
+    /// returns its index. NPE if `light` is null.
+    int addLight(Light* light, const Transform* transform);
+    /// Replaces light `index` (null leaves an empty slot). IOOBE if out of range.
+    void setLight(int index, Light* light, const Transform* transform);
+    void resetLights() noexcept;
+    int getLightCount() const noexcept { return static_cast<int>(lights_.size()); }
+    /// IOOBE if out of range; fills `transform` if non-null.
+    Ref<Light> getLight(int index, Transform* transform) const;
+
+    // ---- Engine interface ----
+    struct LightEntry {
+        Ref<Light> light;
+        Transform toWorld;
+    };
+    const std::vector<LightEntry>& lights() const noexcept { return lights_; }
+    /// Camera-to-world and its inverse (the view matrix).
+    const Transform& cameraToWorld() const noexcept { return cameraToWorld_; }
+    const Transform& worldToCamera() const noexcept { return worldToCamera_; }
+    /// The bound Image2D or Graphics (at most one is non-null).
+    Image2D* targetImage() const noexcept { return targetImage_; }
+    Graphics* targetGraphics() const noexcept { return targetGraphics_; }
+    /// Target size in pixels (0 when unbound).
+    int targetWidth() const noexcept { return targetWidth_; }
+    int targetHeight() const noexcept { return targetHeight_; }
+
+    Graphics3D(const Graphics3D&) = delete;
+    Graphics3D& operator=(const Graphics3D&) = delete;
+
+private:
+    Graphics3D();
+    void bindCommon(RefCounted* target, int width, int height, bool depthBuffer, int hints, const char* where);
+
+    Ref<RefCounted> target_;
+    Image2D* targetImage_ = nullptr;
+    Graphics* targetGraphics_ = nullptr;
+    int targetWidth_ = 0, targetHeight_ = 0;
+    bool depthBuffer_ = false;
+    int hints_ = 0;
+    int viewport_[4] = {0, 0, 0, 0};
+    float depthNear_ = 0.0f, depthFar_ = 1.0f;
+    Ref<Camera> camera_;
+    Transform cameraToWorld_, worldToCamera_;
+    std::vector<LightEntry> lights_;
+};
+
+}  // namespace m3g
