@@ -1,5 +1,21 @@
 // Object3D's animation services: the track list and animate() (spec digest
 // §4.1, §5.12, §5.14).
+//
+// animate() validity interval: the number of world milliseconds from
+// worldTime during which every applied value is known not to change, i.e.
+// animate(t') gives the same result for t' in [worldTime, worldTime + v).
+// 0x7FFFFFFF when nothing is animated or every sample is constant from here
+// on. It is the minimum over all contributing tracks of
+//  - the sequence-time span over which the sample holds (before the first key
+//    or after the last key of a CONSTANT sequence, within a STEP segment,
+//    forever for a single valid key; 0 inside an interpolated segment),
+//    divided by |speed| in the direction the controller moves (speed 0:
+//    forever), rounded down;
+//  - the time until the controller's active interval ends (start != end);
+// and, for tracks whose controller is not yet active, the time until it
+// becomes active. Tracks without a controller or with weight 0 only change
+// through API calls and do not limit it. 0 therefore means "changes
+// continuously" (or within the next millisecond).
 #include <m3g/Object3D.h>
 
 #include <algorithm>
