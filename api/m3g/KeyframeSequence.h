@@ -1,0 +1,89 @@
+// javax.microedition.m3g.KeyframeSequence (spec digest §4.23, §5.12).
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include <m3g/Object3D.h>
+
+namespace m3g {
+
+/// Keyframes (time, value) with an interpolation type, a duration, a repeat
+/// mode and a valid range. Sampled by the animation tracks that use it.
+class KeyframeSequence : public Object3D {
+public:
+    static constexpr int LINEAR = 176;
+    static constexpr int SLERP = 177;
+    static constexpr int SPLINE = 178;
+    static constexpr int SQUAD = 179;
+    static constexpr int STEP = 180;
+    static constexpr int CONSTANT = 192;
+    static constexpr int LOOP = 193;
+
+    /// IAE if numKeyframes < 1, numComponents < 1, interpolation is not one
+    /// of LINEAR, SLERP, SPLINE, SQUAD, STEP, or SLERP/SQUAD with
+    /// numComponents != 4. Keyframes start at time 0 with value 0; duration 0
+    /// (must be set before the sequence is sampled); CONSTANT; valid range
+    /// [0, numKeyframes - 1].
+    KeyframeSequence(int numKeyframes, int numComponents, int interpolation);
+    ~KeyframeSequence() override;
+
+    /// NPE if `value` is null; IOOBE unless 0 <= index < getKeyframeCount();
+    /// IAE if time < 0 or value is shorter than getComponentCount().
+    /// SLERP/SQUAD keyframes are normalised (a zero quaternion becomes the
+    /// identity).
+    void setKeyframe(int index, int time, std::span<const float> value);
+    /// (1.1) Returns the time of keyframe `index` and copies its value into
+    /// `value` unless that is null. IOOBE on the index; IAE if `value` is
+    /// non-null and shorter than getComponentCount().
+    int getKeyframe(int index, std::span<float> value) const;
+
+    /// IOOBE unless both are in [0, getKeyframeCount() - 1]. first > last
+    /// wraps around the end of the keyframe array.
+    void setValidRange(int first, int last);
+    int getValidRangeFirst() const noexcept { return first_; }  // (1.1)
+    int getValidRangeLast() const noexcept { return last_; }    // (1.1)
+
+    /// IAE unless duration > 0.
+    void setDuration(int duration);
+    int getDuration() const noexcept { return duration_; }
+    /// CONSTANT or LOOP, else IAE.
+    void setRepeatMode(int mode);
+    int getRepeatMode() const noexcept { return repeatMode_; }
+
+    int getComponentCount() const noexcept { return components_; }   // (1.1)
+    int getInterpolationType() const noexcept { return interpolation_; }  // (1.1)
+    int getKeyframeCount() const noexcept { return keyCount_; }      // (1.1)
+
+    const char* getClassName() const noexcept override { return "KeyframeSequence"; }
+
+    // ---- Engine interface ----
+    /// Keyframe times, getKeyframeCount() entries.
+    std::span<const int> keyTimes() const noexcept { return times_; }
+    /// Keyframe values, getKeyframeCount() * getComponentCount() floats.
+    std::span<const float> keyValues() const noexcept { return values_; }
+    /// Throws IllegalStateException unless the duration is set, the key times
+    /// are non-decreasing along the valid range and the last valid key time
+    /// is <= the duration. The result is cached until the next change.
+    void validate() const;
+
+protected:
+    KeyframeSequence(const KeyframeSequence& other);
+    Object3D* duplicateImpl(DuplicateMap& map) const override;
+
+private:
+    void changed() noexcept;
+
+    int keyCount_;
+    int components_;
+    int interpolation_;
+    int duration_ = 0;
+    int repeatMode_ = CONSTANT;
+    int first_ = 0;
+    int last_;
+    std::vector<int> times_;
+    std::vector<float> values_;
+    mutable bool validated_ = false;
+};
+
+}  // namespace m3g

@@ -1,0 +1,52 @@
+#include <m3g/AnimationController.h>
+
+#include "Check.h"
+
+namespace m3g {
+
+AnimationController::AnimationController() = default;
+
+AnimationController::~AnimationController() = default;
+
+Object3D* AnimationController::duplicateImpl(DuplicateMap&) const { return new AnimationController(*this); }
+
+void AnimationController::setActiveInterval(int start, int end) {
+    if (start > end)
+        throw IllegalArgumentException(detail::str("AnimationController::setActiveInterval: start ", start,
+                                                   " is greater than end ", end));
+    start_ = start;
+    end_ = end;
+    touch();
+}
+
+void AnimationController::setSpeed(float speed, int worldTime) {
+    refSequenceTime_ = getPosition(worldTime);
+    refWorldTime_ = worldTime;
+    speed_ = speed;
+    touch();
+}
+
+void AnimationController::setPosition(float sequenceTime, int worldTime) {
+    refSequenceTime_ = sequenceTime;
+    refWorldTime_ = worldTime;
+    touch();
+}
+
+float AnimationController::getPosition(int worldTime) const noexcept {
+    // In double: the world time difference may not fit an int or a float.
+    return float(double(refSequenceTime_) + double(speed_) * (double(worldTime) - double(refWorldTime_)));
+}
+
+void AnimationController::setWeight(float weight) {
+    if (!(weight >= 0.0f))
+        throw IllegalArgumentException(
+            detail::str("AnimationController::setWeight: weight ", weight, " must be >= 0"));
+    weight_ = weight;
+    touch();
+}
+
+bool AnimationController::isActive(int worldTime) const noexcept {
+    return start_ == end_ || (worldTime >= start_ && worldTime < end_);
+}
+
+}  // namespace m3g

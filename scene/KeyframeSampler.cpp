@@ -1,0 +1,274 @@
+#include "KeyframeSampler.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <m3g/KeyframeSequence.h>
+
+#include "Check.h"
+
+namespace m3g::detail {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kPi = 3.14159265358979323846;
+
+// ---- Quaternions (x, y, z, w), in double for the intermediate steps ----
+
+struct Quat {
+    double x, y, z, w;
+};
+struct Vec3 {
+    double x, y, z;
+};
+
+Quat quatAt(const float* p) { return {p[0], p[1], p[2], p[3]}; }
+
+Quat mul(const Quat& a, const Quat& b) {
+    return {a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+            a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
+            a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w,
+            a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z};
+}
+
+Quat conjugate(const Quat& q) { return {-q.x, -q.y, -q.z, q.w}; }
+
+double dot(const Quat& a, const Quat& b) { return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w; }
+
+Quat normalized(const Quat& q) {
+    const double len = std::sqrt(dot(q, q));
+    if (!(len > 0.0)) return {0, 0, 0, 1};
+    return {q.x / len, q.y / len, q.z / len, q.w / len};
+}
+
+// log of a unit quaternion: (angle/2) * axis.
+Vec3 logQuat(const Quat& q) {
+    const double len = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z);
+    if (len < 1e-12) return {0, 0, 0};
+    const double s = std::atan2(len, q.w) / len;
+    return {q.x * s, q.y * s, q.z * s};
+}
+
+// exp of a pure quaternion (v, 0).
+Quat expQuat(const Vec3& v) {
+    const double theta = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+    const double s = theta > 1e-12 ? std::sin(theta) / theta : 1.0;
+    return normalized({v.x * s, v.y * s, v.z * s, std::cos(theta)});
+}
+
+// log(a^-1 b)
+Vec3 logDiff(const Quat& a, const Quat& b) { return logQuat(mul(conjugate(a), b)); }
+
+Vec3 add(const Vec3& a, const Vec3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+Vec3 sub(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+Vec3 scale(const Vec3& a, double s) { return {a.x * s, a.y * s, a.z * s}; }
+
+// Spherical interpolation along the arc from a to b as given: no sign flip
+// towards the shortest arc (Nokia behaviour, spec digest §8.3).
+Quat slerp(const Quat& a, const Quat& b, double u) {
+    const double c = dot(a, b);
+    if (c > 1.0 - 1e-9) {  // (nearly) the same rotation: normalised lerp
+        return normalized({a.x + u * (b.x - a.x), a.y + u * (b.y - a.y), a.z + u * (b.z - a.z),
+                           a.w + u * (b.w - a.w)});
+    }
+    if (c < -1.0 + 1e-9) {
+        // Exactly opposite: any great circle through a and -a will do; go
+        // through a quaternion perpendicular to a.
+        const Quat p{-a.y, a.x, -a.w, a.z};
+        const double ca = std::cos(u * kPi), sa = std::sin(u * kPi);
+        return normalized({ca * a.x + sa * p.x, ca * a.y + sa * p.y, ca * a.z + sa * p.z, ca * a.w + sa * p.w});
+    }
+    const double omega = std::acos(c);
+    const double so = std::sin(omega);
+    const double wa = std::sin((1.0 - u) * omega) / so;
+    const double wb = std::sin(u * omega) / so;
+    return normalized({wa * a.x + wb * b.x, wa * a.y + wb * b.y, wa * a.z + wb * b.z, wa * a.w + wb * b.w});
+}
+
+// ---- The valid keyframes, indexed 0..count-1 along the valid range ----
+
+class ValidKeys {
+public:
+    explicit ValidKeys(const KeyframeView& k)
+        : k_(k),
+          count_(k.first <= k.last ? k.last - k.first + 1 : k.keyCount - k.first + k.last + 1),
+          loop_(k.repeatMode == KeyframeSequence::LOOP) {}
+
+    int count() const { return count_; }
+    bool loop() const { return loop_; }
+    int arrayIndex(int j) const {
+        int i = k_.first + j;
+        return i >= k_.keyCount ? i - k_.keyCount : i;
+    }
+    double time(int j) const { return k_.times[arrayIndex(j)]; }
+    const float* value(int j) const { return k_.values.data() + std::size_t(arrayIndex(j)) * k_.components; }
+    int next(int j) const { return j == count_ - 1 ? 0 : j + 1; }
+    int prev(int j) const { return j == 0 ? count_ - 1 : j - 1; }
+    /// Length of the segment j -> next(j); the last one wraps to the first
+    /// key through the end of the duration.
+    double delta(int j) const {
+        if (j == count_ - 1) return double(k_.duration) - time(count_ - 1) + time(0);
+        return time(j + 1) - time(j);
+    }
+    /// Scales of the central difference for the incoming / outgoing tangent
+    /// of key j (non-uniform spacing); 0 at the ends of a CONSTANT sequence.
+    double inScale(int j) const { return tangentScale(j, delta(prev(j))); }
+    double outScale(int j) const { return tangentScale(j, delta(j)); }
+
+private:
+    double tangentScale(int j, double side) const {
+        if (!loop_ && (j == 0 || j == count_ - 1)) return 0.0;
+        const double sum = delta(prev(j)) + delta(j);
+        return sum > 0.0 ? 2.0 * side / sum : 0.0;
+    }
+
+    const KeyframeView& k_;
+    int count_;
+    bool loop_;
+};
+
+void copyKey(const ValidKeys& keys, int j, int components, std::span<float> out) {
+    const float* v = keys.value(j);
+    std::copy(v, v + components, out.begin());
+}
+
+// Hermite tangent (central difference, scaled) at key j for component c.
+double tangent(const ValidKeys& keys, int j, int c, double scaleFactor) {
+    return scaleFactor * 0.5 * (double(keys.value(keys.next(j))[c]) - double(keys.value(keys.prev(j))[c]));
+}
+
+// The SQUAD control quaternions A_j (outgoing) and B_j (incoming).
+Quat squadA(const ValidKeys& keys, int j) {
+    const Quat prev = quatAt(keys.value(keys.prev(j)));
+    const Quat cur = quatAt(keys.value(j));
+    const Quat next = quatAt(keys.value(keys.next(j)));
+    const Vec3 toNext = logDiff(cur, next);
+    const Vec3 cfd = scale(add(toNext, logDiff(prev, cur)), 0.5);
+    const Vec3 t = scale(sub(scale(cfd, keys.outScale(j)), toNext), 0.5);
+    return mul(cur, expQuat(t));
+}
+
+Quat squadB(const ValidKeys& keys, int j) {
+    const Quat prev = quatAt(keys.value(keys.prev(j)));
+    const Quat cur = quatAt(keys.value(j));
+    const Quat next = quatAt(keys.value(keys.next(j)));
+    const Vec3 fromPrev = logDiff(prev, cur);
+    const Vec3 cfd = scale(add(logDiff(cur, next), fromPrev), 0.5);
+    const Vec3 t = scale(sub(fromPrev, scale(cfd, keys.inScale(j))), 0.5);
+    return mul(cur, expQuat(t));
+}
+
+void writeQuat(const Quat& q, std::span<float> out) {
+    out[0] = float(q.x);
+    out[1] = float(q.y);
+    out[2] = float(q.z);
+    out[3] = float(q.w);
+}
+
+}  // namespace
+
+KeyframeView viewOf(const KeyframeSequence& s) noexcept {
+    return KeyframeView{s.getInterpolationType(), s.getRepeatMode(),      s.getDuration(),
+                        s.getComponentCount(),    s.getKeyframeCount(),   s.getValidRangeFirst(),
+                        s.getValidRangeLast(),    s.keyTimes(),           s.keyValues()};
+}
+
+std::string keyframeProblem(const KeyframeView& k) {
+    if (k.duration <= 0) return "the duration has not been set";
+    const ValidKeys keys(k);
+    for (int j = 0; j + 1 < keys.count(); ++j)
+        if (keys.time(j + 1) < keys.time(j))
+            return str("keyframe ", keys.arrayIndex(j + 1), " (time ", keys.time(j + 1), ") comes before keyframe ",
+                       keys.arrayIndex(j), " (time ", keys.time(j),
+                       ") in the valid range; times must be non-decreasing");
+    const int lastTime = k.times[keys.arrayIndex(keys.count() - 1)];
+    if (lastTime > k.duration)
+        return str("the last valid keyframe time ", lastTime, " exceeds the duration ", k.duration);
+    return {};
+}
+
+SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<float> out) {
+    const ValidKeys keys(k);
+    const int n = keys.count();
+    const int comps = k.components;
+    if (n == 1) {
+        copyKey(keys, 0, comps, out);
+        return {};
+    }
+
+    // Map the time onto the keyframes.
+    double s = time;
+    if (keys.loop()) {
+        const double d = k.duration;
+        s = std::fmod(s, d);
+        if (s < 0.0) s += d;
+        if (s < keys.time(0)) s += d;  // now in [t_first, t_first + D)
+    } else {
+        if (s < keys.time(0)) {
+            copyKey(keys, 0, comps, out);
+            return {keys.time(0) - s, kInf};
+        }
+        if (s >= keys.time(n - 1)) {
+            copyKey(keys, n - 1, comps, out);
+            return {kInf, s - keys.time(n - 1)};
+        }
+    }
+
+    // The last key with time <= s starts the segment (for CONSTANT that is
+    // never the last key; for LOOP the last key starts the wrap segment).
+    int lo = 0, hi = n - 1;
+    while (lo < hi) {
+        const int mid = (lo + hi + 1) / 2;
+        if (keys.time(mid) <= s)
+            lo = mid;
+        else
+            hi = mid - 1;
+    }
+    const int j = lo;
+    const int j1 = keys.next(j);
+    const double t0 = keys.time(j);
+    const double delta = keys.delta(j);
+
+    if (k.interpolation == KeyframeSequence::STEP) {
+        copyKey(keys, j, comps, out);
+        return {t0 + delta - s, s - t0};
+    }
+    if (s == t0 || !(delta > 0.0)) {
+        copyKey(keys, j, comps, out);
+        return {0.0, 0.0};
+    }
+
+    const double u = (s - t0) / delta;
+    const float* p0 = keys.value(j);
+    const float* p1 = keys.value(j1);
+    switch (k.interpolation) {
+    case KeyframeSequence::LINEAR:
+        for (int c = 0; c < comps; ++c) out[c] = float((1.0 - u) * p0[c] + u * p1[c]);
+        break;
+    case KeyframeSequence::SLERP:
+        writeQuat(slerp(quatAt(p0), quatAt(p1), u), out);
+        break;
+    case KeyframeSequence::SPLINE: {
+        const double u2 = u * u, u3 = u2 * u;
+        const double h00 = 2 * u3 - 3 * u2 + 1, h01 = -2 * u3 + 3 * u2;
+        const double h10 = u3 - 2 * u2 + u, h11 = u3 - u2;
+        const double sOut = keys.outScale(j), sIn = keys.inScale(j1);
+        for (int c = 0; c < comps; ++c)
+            out[c] = float(h00 * p0[c] + h01 * p1[c] + h10 * tangent(keys, j, c, sOut) +
+                           h11 * tangent(keys, j1, c, sIn));
+        break;
+    }
+    case KeyframeSequence::SQUAD: {
+        const Quat q0 = quatAt(p0), q1 = quatAt(p1);
+        const Quat a = squadA(keys, j), b = squadB(keys, j1);
+        writeQuat(slerp(slerp(q0, q1, u), slerp(a, b, u), 2.0 * u * (1.0 - u)), out);
+        break;
+    }
+    default:
+        break;
+    }
+    return {0.0, 0.0};
+}
+
+}  // namespace m3g::detail

@@ -1,0 +1,48 @@
+// Keyframe sampling (spec digest §5.12) on plain data, so that it can be
+// tested without the object model. Internal to m3g_scene.
+#pragma once
+
+#include <limits>
+#include <span>
+#include <string>
+
+namespace m3g {
+class KeyframeSequence;
+}
+
+namespace m3g::detail {
+
+/// The data of a KeyframeSequence needed to sample it.
+struct KeyframeView {
+    int interpolation;   // KeyframeSequence::LINEAR ... STEP
+    int repeatMode;      // KeyframeSequence::CONSTANT or LOOP
+    int duration;        // > 0 for a valid sequence
+    int components;      // floats per keyframe
+    int keyCount;        // keyframes in the arrays
+    int first, last;     // valid range; first > last wraps
+    std::span<const int> times;     // keyCount entries
+    std::span<const float> values;  // keyCount * components entries
+};
+
+/// View of a sequence (no copy; valid while the sequence is unchanged).
+KeyframeView viewOf(const KeyframeSequence& sequence) noexcept;
+
+/// Empty string if the view can be sampled, else the reason: duration not
+/// set, times decreasing along the valid range, last valid time > duration.
+std::string keyframeProblem(const KeyframeView& k);
+
+/// How far (in sequence time) the sampled value is guaranteed to stay the
+/// same when the sequence time moves forward / backward from the sample
+/// point. Infinity when it never changes in that direction, 0 when it
+/// changes continuously.
+struct SampleValidity {
+    double forward = std::numeric_limits<double>::infinity();
+    double backward = std::numeric_limits<double>::infinity();
+};
+
+/// Samples a valid view (see keyframeProblem) at sequence time `time` into
+/// `out` (at least k.components floats). Quaternion results (SLERP, SQUAD)
+/// are unit length; SLERP does not flip to the shortest arc (Nokia).
+SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<float> out);
+
+}  // namespace m3g::detail

@@ -1,0 +1,259 @@
+// Keyframe sampling (spec digest §5.12), every interpolation and repeat mode
+// at hand-computed points.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include <m3g/KeyframeSequence.h>
+
+#include "KeyframeSampler.h"
+
+using namespace m3g;
+
+namespace {
+
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+struct Key {
+    int time;
+    std::vector<float> value;
+};
+
+Ref<KeyframeSequence> makeSeq(int interp, int repeat, int duration, const std::vector<Key>& keys) {
+    const int comps = static_cast<int>(keys[0].value.size());
+    Ref<KeyframeSequence> s = make<KeyframeSequence>(static_cast<int>(keys.size()), comps, interp);
+    for (std::size_t i = 0; i < keys.size(); ++i) s->setKeyframe(static_cast<int>(i), keys[i].time, keys[i].value);
+    s->setDuration(duration);
+    s->setRepeatMode(repeat);
+    return s;
+}
+
+float sample1(const KeyframeSequence& s, double t) {
+    float out[1];
+    s.validate();
+    detail::sampleKeyframes(detail::viewOf(s), t, out);
+    return out[0];
+}
+
+std::vector<float> sampleN(const KeyframeSequence& s, double t) {
+    std::vector<float> out(static_cast<std::size_t>(s.getComponentCount()));
+    s.validate();
+    detail::sampleKeyframes(detail::viewOf(s), t, out);
+    return out;
+}
+
+// Quaternion for a rotation whose half-angle is `halfDeg` about +Z.
+std::vector<float> zQuat(double halfDeg) {
+    return {0.0f, 0.0f, float(std::sin(halfDeg * kDeg)), float(std::cos(halfDeg * kDeg))};
+}
+
+void expectQuat(const std::vector<float>& q, const std::vector<float>& expected, float eps = 1e-5f) {
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(q[i], expected[i], eps) << "component " << i;
+}
+
+}  // namespace
+
+TEST(KeyframeSampler, LinearConstant) {
+    auto s = makeSeq(KeyframeSequence::LINEAR, KeyframeSequence::CONSTANT, 40, {{0, {0}}, {10, {10}}, {30, {50}}});
+    EXPECT_FLOAT_EQ(sample1(*s, -5), 0);
+    EXPECT_FLOAT_EQ(sample1(*s, 0), 0);
+    EXPECT_FLOAT_EQ(sample1(*s, 5), 5);
+    EXPECT_FLOAT_EQ(sample1(*s, 10), 10);
+    EXPECT_FLOAT_EQ(sample1(*s, 20), 30);  // halfway 10 -> 50
+    EXPECT_FLOAT_EQ(sample1(*s, 30), 50);
+    EXPECT_FLOAT_EQ(sample1(*s, 35), 50);
+    EXPECT_FLOAT_EQ(sample1(*s, 1000), 50);
+}
+
+TEST(KeyframeSampler, LinearLoopWrapsThroughDuration) {
+    auto s = makeSeq(KeyframeSequence::LINEAR, KeyframeSequence::LOOP, 40, {{0, {0}}, {10, {10}}, {30, {50}}});
+    // Wrap segment 30 -> 40 (key 0 again), 50 -> 0.
+    EXPECT_FLOAT_EQ(sample1(*s, 35), 25);
+    EXPECT_FLOAT_EQ(sample1(*s, 45), 5);
+    EXPECT_FLOAT_EQ(sample1(*s, -5), 25);
+    EXPECT_FLOAT_EQ(sample1(*s, 70), 50);
+    EXPECT_FLOAT_EQ(sample1(*s, 80), 0);
+}
+
+TEST(KeyframeSampler, LoopWithFirstKeyAfterZero) {
+    // Keys at 10 and 20, duration 30: the wrap segment 20 -> 40 has length 20.
+    auto s = makeSeq(KeyframeSequence::LINEAR, KeyframeSequence::LOOP, 30, {{10, {0}}, {20, {10}}});
+    EXPECT_FLOAT_EQ(sample1(*s, 5), 2.5f);   // 35 on the wrap: u = 0.75
+    EXPECT_FLOAT_EQ(sample1(*s, 25), 7.5f);  // u = 0.25
+    EXPECT_FLOAT_EQ(sample1(*s, 15), 5);
+}
+
+TEST(KeyframeSampler, Step) {
+    auto s = makeSeq(KeyframeSequence::STEP, KeyframeSequence::CONSTANT, 20, {{0, {1}}, {10, {2}}, {20, {3}}});
+    EXPECT_FLOAT_EQ(sample1(*s, 9.9), 1);
+    EXPECT_FLOAT_EQ(sample1(*s, 10), 2);
+    EXPECT_FLOAT_EQ(sample1(*s, 15), 2);
+    EXPECT_FLOAT_EQ(sample1(*s, 19.99), 2);
+    EXPECT_FLOAT_EQ(sample1(*s, 25), 3);
+    float out[1];
+    const auto v = detail::sampleKeyframes(detail::viewOf(*s), 15, out);
+    EXPECT_DOUBLE_EQ(v.forward, 5);
+    EXPECT_DOUBLE_EQ(v.backward, 5);
+}
+
+TEST(KeyframeSampler, StepLoop) {
+    auto s = makeSeq(KeyframeSequence::STEP, KeyframeSequence::LOOP, 30, {{0, {1}}, {10, {2}}, {20, {3}}});
+    EXPECT_FLOAT_EQ(sample1(*s, 25), 3);
+    EXPECT_FLOAT_EQ(sample1(*s, 31), 1);
+    EXPECT_FLOAT_EQ(sample1(*s, 42), 2);
+}
+
+TEST(KeyframeSampler, CoincidentKeysTakeTheLaterOne) {
+    auto s = makeSeq(KeyframeSequence::LINEAR, KeyframeSequence::CONSTANT, 20,
+                     {{0, {0}}, {10, {5}}, {10, {20}}, {20, {30}}});
+    EXPECT_FLOAT_EQ(sample1(*s, 5), 2.5f);
+    EXPECT_FLOAT_EQ(sample1(*s, 10), 20);
+    EXPECT_FLOAT_EQ(sample1(*s, 15), 25);
+}
+
+TEST(KeyframeSampler, SingleKeyIsConstant) {
+    auto s = makeSeq(KeyframeSequence::SPLINE, KeyframeSequence::LOOP, 10, {{3, {7}}});
+    EXPECT_FLOAT_EQ(sample1(*s, -100), 7);
+    EXPECT_FLOAT_EQ(sample1(*s, 5), 7);
+    float out[1];
+    const auto v = detail::sampleKeyframes(detail::viewOf(*s), 5, out);
+    EXPECT_TRUE(std::isinf(v.forward));
+    EXPECT_TRUE(std::isinf(v.backward));
+}
+
+TEST(KeyframeSampler, ValidityOfConstantEnds) {
+    auto s = makeSeq(KeyframeSequence::LINEAR, KeyframeSequence::CONSTANT, 40, {{10, {0}}, {30, {1}}});
+    float out[1];
+    auto v = detail::sampleKeyframes(detail::viewOf(*s), 4, out);
+    EXPECT_DOUBLE_EQ(v.forward, 6);
+    EXPECT_TRUE(std::isinf(v.backward));
+    v = detail::sampleKeyframes(detail::viewOf(*s), 35, out);
+    EXPECT_TRUE(std::isinf(v.forward));
+    EXPECT_DOUBLE_EQ(v.backward, 5);
+    v = detail::sampleKeyframes(detail::viewOf(*s), 20, out);
+    EXPECT_DOUBLE_EQ(v.forward, 0);
+}
+
+TEST(KeyframeSampler, SplineNonUniformSpacingReproducesLinearData) {
+    // P = t at t = 0, 10, 30, 40. Segment 10 -> 30: central difference 15,
+    // outgoing scale at key 1 = 2*20/(10+20) = 4/3 and incoming scale at key 2
+    // = 2*20/(20+10) = 4/3, so both tangents are 20 and the curve is exactly
+    // linear: at u = 0.25 (t = 15) Hermite gives
+    // 0.84375*10 + 0.15625*30 + 0.140625*20 - 0.046875*20 = 15.
+    // (Unscaled tangents of 15 would give 14.53.)
+    auto s = makeSeq(KeyframeSequence::SPLINE, KeyframeSequence::CONSTANT, 40,
+                     {{0, {0}}, {10, {10}}, {30, {30}}, {40, {40}}});
+    EXPECT_NEAR(sample1(*s, 15), 15.0f, 1e-5f);
+    EXPECT_NEAR(sample1(*s, 20), 20.0f, 1e-5f);
+    EXPECT_NEAR(sample1(*s, 25), 25.0f, 1e-5f);
+    // First segment: the first key has a zero tangent (CONSTANT end), key 1's
+    // incoming tangent is 15 * 2*10/(10+20) = 10. At u = 0.5:
+    // 0.5*0 + 0.5*10 + 0.125*0 - 0.125*10 = 3.75.
+    EXPECT_NEAR(sample1(*s, 5), 3.75f, 1e-5f);
+    EXPECT_FLOAT_EQ(sample1(*s, 10), 10);
+    EXPECT_FLOAT_EQ(sample1(*s, 50), 40);
+}
+
+TEST(KeyframeSampler, SplineLoopUsesWrappedNeighbours) {
+    // Keys t = 0, 10, 30 with P = 0, 10, 30; duration 40 (wrap segment 10).
+    // Key 0: T = (P1 - P2)/2 = -10, scales 1 (10 | 10).
+    // Key 1: T = (P2 - P0)/2 = 15, in 2*10/30, out 2*20/30.
+    // Key 2: T = (P0 - P1)/2 = -5, in 2*20/30, out 2*10/30.
+    auto s = makeSeq(KeyframeSequence::SPLINE, KeyframeSequence::LOOP, 40, {{0, {0}}, {10, {10}}, {30, {30}}});
+    // t = 5, u = 0.5: 0.5*0 + 0.5*10 + 0.125*(-10) - 0.125*(15*2/3) = 2.5
+    EXPECT_NEAR(sample1(*s, 5), 2.5f, 1e-5f);
+    // t = 35, wrap segment u = 0.5: 0.5*30 + 0.5*0 + 0.125*(-5*2/3) - 0.125*(-10) = 15.8333333
+    EXPECT_NEAR(sample1(*s, 35), 15.833333f, 1e-4f);
+    EXPECT_NEAR(sample1(*s, 75), 15.833333f, 1e-4f);
+}
+
+TEST(KeyframeSampler, SplineVectorComponentsIndependent) {
+    auto s = makeSeq(KeyframeSequence::SPLINE, KeyframeSequence::CONSTANT, 40,
+                     {{0, {0, 0}}, {10, {10, -10}}, {30, {30, -30}}, {40, {40, -40}}});
+    const auto v = sampleN(*s, 15);
+    EXPECT_NEAR(v[0], 15.0f, 1e-5f);
+    EXPECT_NEAR(v[1], -15.0f, 1e-5f);
+}
+
+TEST(KeyframeSampler, Slerp) {
+    // Identity to 90 degrees about Z; halfway is 45 degrees (half-angle 22.5).
+    auto s = makeSeq(KeyframeSequence::SLERP, KeyframeSequence::CONSTANT, 10, {{0, zQuat(0)}, {10, zQuat(45)}});
+    expectQuat(sampleN(*s, 5), zQuat(22.5));
+    expectQuat(sampleN(*s, 2.5), zQuat(11.25));
+    expectQuat(sampleN(*s, 10), zQuat(45));
+}
+
+TEST(KeyframeSampler, SlerpDoesNotTakeTheShortestArc) {
+    // q1 = -(rotation of 45 degrees about Z): dot(q0, q1) = -cos 22.5 < 0.
+    // Without the sign flip the path is the 157.5 degree arc of the 4D sphere;
+    // halfway lies 78.75 degrees from q0 towards q1: (0, 0, -sin 78.75, cos 78.75).
+    const std::vector<float> q1{0.0f, 0.0f, -float(std::sin(22.5 * kDeg)), -float(std::cos(22.5 * kDeg))};
+    auto s = makeSeq(KeyframeSequence::SLERP, KeyframeSequence::CONSTANT, 10, {{0, zQuat(0)}, {10, q1}});
+    expectQuat(sampleN(*s, 5), {0.0f, 0.0f, -0.98078528f, 0.19509032f});
+}
+
+TEST(KeyframeSampler, SlerpOppositeQuaternionsStaysUnit) {
+    auto s = makeSeq(KeyframeSequence::SLERP, KeyframeSequence::CONSTANT, 10,
+                     {{0, {0, 0, 0, 1}}, {10, {0, 0, 0, -1}}});
+    const auto q = sampleN(*s, 5);
+    const double len = std::sqrt(double(q[0]) * q[0] + double(q[1]) * q[1] + double(q[2]) * q[2] + double(q[3]) * q[3]);
+    EXPECT_NEAR(len, 1.0, 1e-6);
+    EXPECT_NEAR(q[3], 0.0f, 1e-6f);  // a quarter of the way round the 4D circle
+    expectQuat(sampleN(*s, 10), {0, 0, 0, -1});
+}
+
+TEST(KeyframeSampler, SquadNonUniformSpacing) {
+    // Rotations about Z only (everything commutes, logs are (0, 0, half-angle)).
+    // Half-angles 0, 10, 30, 40 degrees at t = 0, 10, 30, 40: linear in time.
+    // Key 1: logs prev 10, next 20, centred difference 15, out scale 4/3 -> 20,
+    //   A1 = q1 exp((20 - 20)/2) = q1. Key 2: in scale 4/3 -> 20, B2 = q2.
+    // So segment 1 is a plain slerp: at t = 15 the half-angle is 15.
+    auto s = makeSeq(KeyframeSequence::SQUAD, KeyframeSequence::CONSTANT, 40,
+                     {{0, zQuat(0)}, {10, zQuat(10)}, {30, zQuat(30)}, {40, zQuat(40)}});
+    expectQuat(sampleN(*s, 15), zQuat(15));
+    expectQuat(sampleN(*s, 25), zQuat(25));
+    // Segment 0: key 0 is a CONSTANT end, its tangent is 0:
+    //   A0 = q0 exp((0 - 10)/2) -> half-angle -5.
+    // Key 1 incoming: 15 * 2*10/30 = 10, B1 = q1 exp((10 - 10)/2) = q1 -> 10.
+    // u = 0.5: slerp(q0, q1) -> 5, slerp(A0, B1) -> 2.5, blended with
+    // 2u(1-u) = 0.5 -> 3.75.
+    expectQuat(sampleN(*s, 5), zQuat(3.75));
+}
+
+TEST(KeyframeSampler, SquadUniformMatchesSlerpForConstantRate) {
+    auto s = makeSeq(KeyframeSequence::SQUAD, KeyframeSequence::LOOP, 40,
+                     {{0, zQuat(0)}, {10, zQuat(10)}, {20, zQuat(20)}, {30, zQuat(30)}});
+    expectQuat(sampleN(*s, 12), zQuat(12));
+}
+
+TEST(KeyframeSampler, ValidRangeWrap) {
+    // Valid keys 2, 3, 0 (range first = 2 > last = 0); key 1 is ignored even
+    // though its time would break the order.
+    Ref<KeyframeSequence> s = make<KeyframeSequence>(4, 1, KeyframeSequence::LINEAR);
+    const float v0[1] = {40}, v1[1] = {999}, v2[1] = {0}, v3[1] = {10};
+    s->setKeyframe(0, 20, v0);
+    s->setKeyframe(1, 5, v1);
+    s->setKeyframe(2, 0, v2);
+    s->setKeyframe(3, 10, v3);
+    s->setDuration(30);
+    EXPECT_THROW(s->validate(), IllegalStateException);  // full range 20, 5, 0, 10
+    s->setValidRange(2, 0);
+    EXPECT_NO_THROW(s->validate());
+    EXPECT_FLOAT_EQ(sample1(*s, 5), 5);
+    EXPECT_FLOAT_EQ(sample1(*s, 15), 25);
+    EXPECT_FLOAT_EQ(sample1(*s, 25), 40);
+    s->setRepeatMode(KeyframeSequence::LOOP);
+    // Wrap segment key 0 (t 20, 40) -> key 2 (t 0 + 30, 0): at 25 u = 0.5.
+    EXPECT_FLOAT_EQ(sample1(*s, 25), 20);
+    EXPECT_FLOAT_EQ(sample1(*s, 35), 5);
+}
+
+TEST(KeyframeSampler, ValidRangeSubset) {
+    auto s = makeSeq(KeyframeSequence::LINEAR, KeyframeSequence::CONSTANT, 100,
+                     {{0, {100}}, {10, {0}}, {20, {10}}, {30, {500}}});
+    s->setValidRange(1, 2);
+    EXPECT_FLOAT_EQ(sample1(*s, 0), 0);  // before key 1: its value
+    EXPECT_FLOAT_EQ(sample1(*s, 15), 5);
+    EXPECT_FLOAT_EQ(sample1(*s, 90), 10);
+}
