@@ -209,9 +209,10 @@ void Node::removeBoneOwner(const Node* mesh) noexcept {
 }
 
 void Node::collectReferences(std::vector<Object3D*>& out) const {
+    // Alignment references are deliberately not listed: they may point up or
+    // across the scene graph (often at an ancestor or the camera), and
+    // animate(), find() and duplicate() follow getReferences downwards only.
     Transformable::collectReferences(out);
-    if (Node* z = zRef_.get()) out.push_back(z);
-    if (Node* y = yRef_.get()) out.push_back(y);
 }
 
 void Node::remapReferences(const DuplicateMap& map) {

@@ -27,6 +27,7 @@ public:
 
 protected:
     Group(const Group& other);  // copies no children; duplicateImpl copies them
+    /// Order: children.
     void collectReferences(std::vector<Object3D*>& out) const override;
     Object3D* duplicateImpl(DuplicateMap& map) const override;
     /// Duplicates the children of `source` into this group.

@@ -25,7 +25,7 @@ public:
 
 protected:
     World(const World& other);
-    /// Order: alignment references, children, active camera, background.
+    /// Order: children, active camera, background.
     void collectReferences(std::vector<Object3D*>& out) const override;
     Object3D* duplicateImpl(DuplicateMap& map) const override;
     void remapReferences(const DuplicateMap& map) override;

@@ -48,11 +48,16 @@ TEST(Object3D, FindSearchesThisThenReferencesDepthFirst) {
     EXPECT_EQ(w->find(0), nullptr);
 }
 
-TEST(Object3D, FindTerminatesOnAlignmentCycles) {
+TEST(Object3D, AlignmentReferencesAreNotTraversed) {
+    // Alignment references point up or across the graph: find() and
+    // getReferences() only go down.
     Ref<Group> root = make<Group>(), a = make<Group>();
     root->addChild(a);
-    a->setAlignment(root, Node::ORIGIN, nullptr, Node::NONE);  // a -> root -> a
-    EXPECT_EQ(a->find(12345), nullptr);
+    root->setUserID(7);
+    a->setAlignment(root, Node::ORIGIN, nullptr, Node::NONE);
+    EXPECT_EQ(a->getReferences(), 0);
+    EXPECT_EQ(a->find(7), nullptr);
+    EXPECT_EQ(root->find(7), root);
 }
 
 TEST(Object3D, GetReferencesCountsAndFills) {

@@ -364,18 +364,21 @@ TEST(Object3DAnimation, InvalidSequenceInChildThrows) {
     EXPECT_THROW(root->animate(0), IllegalStateException);
 }
 
-TEST(Object3DAnimation, ReferenceCycleTerminates) {
-    // The child's alignment reference is its parent: a cycle through
-    // getReferences. Every object is visited once.
+TEST(Object3DAnimation, AlignmentReferenceIsNotFollowed) {
+    // The child's alignment reference is its parent. animate() goes down the
+    // graph only, so animating the child leaves the parent alone.
     Ref<Group> parent = make<Group>();
     Ref<Group> child = make<Group>();
     parent->addChild(child);
     child->setAlignment(parent, Node::ORIGIN, nullptr, Node::NONE);
     parent->addAnimationTrack(track(constant({1, 2, 3}), AnimationTrack::TRANSLATION));
     child->addAnimationTrack(track(constant({4, 5, 6}), AnimationTrack::TRANSLATION));
-    child->animate(0);  // reaches the parent through the alignment reference
+    child->animate(0);
     EXPECT_EQ(translation(*child)[0], 4.0f);
+    EXPECT_EQ(translation(*parent)[0], 0.0f);
+    parent->animate(0);  // and the parent reaches its child once
     EXPECT_EQ(translation(*parent)[0], 1.0f);
+    EXPECT_EQ(translation(*child)[0], 4.0f);
 }
 
 TEST(Object3DAnimation, SharedSequenceAndControllerAcrossObjects) {
