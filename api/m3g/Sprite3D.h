@@ -39,7 +39,7 @@ public:
 
 protected:
     Sprite3D(const Sprite3D& other);
-    /// Order: the Node's alignment references, then image, appearance.
+    /// Order: image, appearance.
     void collectReferences(std::vector<Object3D*>& out) const override;
     Object3D* duplicateImpl(DuplicateMap& map) const override;
 
