@@ -62,7 +62,7 @@ void InfluenceTable::rebuildVertex(int v) {
 }
 
 void InfluenceTable::add(int bone, std::int32_t weight, int first, int count) {
-    if (bone < 0 || weight <= 0 || first < 0 || count <= 0 || first + count > 65535)
+    if (bone < 0 || weight <= 0 || first < 0 || count <= 0 || static_cast<long long>(first) + count > 65535)
         throw std::invalid_argument("InfluenceTable::add: bone >= 0, weight > 0, count > 0, range within 65535");
     ensureVertices(first + count);
     boneCount_ = std::max(boneCount_, bone + 1);
