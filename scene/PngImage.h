@@ -1,0 +1,45 @@
+// PNG decoding for the Loader (spec digest §7): a PNG becomes an immutable
+// Image2D whose format follows the PNG colour type (corpus REFERENCE.md):
+//   grey -> LUMINANCE; grey+alpha or grey+tRNS -> LUMINANCE_ALPHA;
+//   RGB or palette -> RGB; RGB+tRNS, palette+tRNS or RGBA -> RGBA.
+// 16-bit samples are reduced to 8 bits (high byte), 1/2/4-bit grey and
+// palettes are expanded. No gamma or colour-space conversion is applied.
+//
+// Internal to the loader (scene/), not part of the public API. Creating the
+// Image2D from the result is the loader's job.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace m3g::detail {
+
+/// Image2D format constants (spec digest §3; equal to Image2D::LUMINANCE etc.).
+inline constexpr int kImageLuminance = 97;
+inline constexpr int kImageLuminanceAlpha = 98;
+inline constexpr int kImageRGB = 99;
+inline constexpr int kImageRGBA = 100;
+
+struct PngImage {
+    int format = 0;  ///< kImageLuminance .. kImageRGBA
+    int width = 0;
+    int height = 0;
+    /// Rows top to bottom, tightly packed, bytesPerPixel(format) bytes per pixel.
+    std::vector<std::uint8_t> pixels;
+};
+
+/// Bytes per pixel of the four formats above (1, 2, 3, 4).
+int pngFormatBytesPerPixel(int format);
+
+/// Largest width or height accepted, and largest decoded size in bytes.
+inline constexpr std::uint32_t kPngMaxDimension = 16384;
+inline constexpr std::uint64_t kPngMaxDecodedBytes = 256ull << 20;
+
+/// Decodes a whole PNG file. Throws IOException naming `context` (e.g. the
+/// file name) and the reason on any error (bad signature, truncation, CRC or
+/// zlib errors, oversized image).
+PngImage decodePng(std::span<const std::uint8_t> data, const std::string& context = "PNG image");
+
+}  // namespace m3g::detail
