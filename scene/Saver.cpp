@@ -550,7 +550,10 @@ void ObjectSerializer::vertexBuffer(const VertexBuffer& o) {
 // ---- ordering ------------------------------------------------------------
 
 /// Every object reachable from `roots`, each after everything it references
-/// (post-order of an iterative depth-first walk, roots in order).
+/// (post-order of an iterative depth-first walk, roots in order). The
+/// dependencies of an object are exactly the ObjectIndex fields its
+/// serialisation writes (so alignment references and SkinnedMesh bones are
+/// included although getReferences does not list them).
 std::vector<const Object3D*> orderObjects(std::span<Object3D* const> roots, ObjectSerializer& ser) {
     enum class State : std::uint8_t { Visiting, Done };
     std::unordered_map<const Object3D*, State> state;
@@ -573,7 +576,6 @@ std::vector<const Object3D*> orderObjects(std::span<Object3D* const> roots, Obje
             throw;
         }
         ser.deps = nullptr;
-        // SkinnedMesh bones are inside the skeleton, already a dependency.
         state[o] = State::Visiting;
         stack.push_back(std::move(f));
     };

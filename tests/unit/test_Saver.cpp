@@ -610,6 +610,20 @@ TEST(Saver, AlignmentReferenceIsWrittenBeforeTheNode) {
     EXPECT_EQ(r.readObjectIndex(), 0u);
 }
 
+TEST(Saver, DeepHierarchyNeedsNoRecursion) {
+    Ref<Group> root = new Group();
+    Group* g = root.get();
+    for (int i = 0; i < 3000; ++i) {
+        Ref<Group> child = new Group();
+        g->addChild(child.get());
+        g = child.get();
+    }
+    Object3D* roots[] = {root.get()};
+    M3GFile f = parse(Saver::save(roots));
+    EXPECT_EQ(f.objects.size(), 3002u);
+    checkReferences(f);
+}
+
 TEST(Saver, AlignmentCycleIsAnIOException) {
     Ref<Group> parent = new Group();
     Ref<Group> child = new Group();
