@@ -35,7 +35,8 @@ SkinnedMesh::SkinnedMesh(const SkinnedMesh& other)
       bones_(other.bones_),
       atRest_(other.atRest_),
       boneIndex_(other.boneIndex_),
-      table_(other.table_) {}
+      table_(other.table_),
+      added_(other.added_) {}
 
 SkinnedMesh::~SkinnedMesh() {
     for (const auto& b : bones_) b->removeBoneOwner(this);
@@ -110,6 +111,7 @@ void SkinnedMesh::addTransform(Node* bone, int weight, int firstVertex, int numV
         bone->addBoneOwner(this);
     }
     table_.add(index, weight, firstVertex, numVertices);
+    added_.push_back({index, weight, firstVertex, numVertices});
     touch();
 }
 

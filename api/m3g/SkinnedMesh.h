@@ -66,6 +66,17 @@ public:
     /// Bone index of `node`, or -1 if it was never added.
     int boneIndex(const Node* node) const noexcept;
 
+    /// One successful addTransform call, as made (the Saver writes these as
+    /// the transform references of the file, §6.6).
+    struct AddedTransform {
+        int bone;         ///< bone index: the node is bone(bone)
+        int weight;       ///< the integer weight as passed
+        int firstVertex;
+        int vertexCount;
+    };
+    /// Every successful addTransform call, in call order.
+    std::span<const AddedTransform> addedTransforms() const noexcept { return added_; }
+
 protected:
     /// Copies the bookkeeping; the skeleton is copied by duplicateImpl and
     /// the bones are remapped to the copies in remapReferences.
@@ -84,6 +95,7 @@ private:
     std::vector<Transform> atRest_;           // dense bone index -> at-rest matrix
     std::unordered_map<const Node*, int> boneIndex_;
     skin::InfluenceTable table_;
+    std::vector<AddedTransform> added_;       // addTransform calls, in order
 };
 
 }  // namespace m3g

@@ -25,6 +25,7 @@
 #include <m3g/Object3D.h>
 #include <m3g/PolygonMode.h>
 #include <m3g/RayIntersection.h>
+#include <m3g/Saver.h>
 #include <m3g/Ref.h>
 #include <m3g/SkinnedMesh.h>
 #include <m3g/Sprite3D.h>
