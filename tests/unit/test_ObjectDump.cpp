@@ -378,6 +378,13 @@ struct Scene {
 
 // ---------------------------------------------------------------------------
 
+TEST(ObjectDump, TestParserIsStrict) {
+    for (const char* bad : {"[1,]", "{\"a\": NaN}", "[Infinity]", "[01]", "{\"a\" 1}", "[1] x", "\"\x01\"",
+                            "{\"a\": 1, \"a\": 2}", "[-]", "[1.]"})
+        EXPECT_THROW(parse(bad), std::runtime_error) << bad;
+    EXPECT_EQ(parse("{\"a\": [1, -2.5e3, null, true, \"x\\ny\"]}")["a"][1].asNum(), -2500.0);
+}
+
 TEST(ObjectDump, JsonIsValidAndListsEveryObjectOnce) {
     Scene s;
     const std::string text = dump(s.world);
