@@ -1,0 +1,146 @@
+#include "CliArgs.h"
+
+#include <charconv>
+#include <system_error>
+
+namespace m3gcli {
+
+namespace {
+
+struct CommandSpec {
+    std::string_view name;
+    int minFiles;
+    int maxFiles;
+    bool json, lenient, time, compress;  // options the command takes
+};
+
+constexpr CommandSpec kCommands[] = {
+    {"info", 0, 1, true, true, true, false},
+    {"convert", 2, 2, false, true, false, true},
+    {"version", 0, 0, false, false, false, false},
+    {"help", 0, 0, false, false, false, false},
+};
+
+const CommandSpec* findCommand(std::string_view name) {
+    for (const auto& c : kCommands)
+        if (c.name == name) return &c;
+    return nullptr;
+}
+
+std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
+
+void requireOption(bool allowed, std::string_view option, const CommandSpec& cmd) {
+    if (!allowed)
+        throw CliError("option " + std::string(option) + " does not apply to '" + std::string(cmd.name) + "'");
+}
+
+}  // namespace
+
+std::optional<int> parseInt(std::string_view text) {
+    if (text.empty()) return std::nullopt;
+    std::string_view digits = text;
+    const bool plus = digits.front() == '+';  // from_chars takes '-' but not '+'
+    if (plus) digits.remove_prefix(1);
+    if (digits.empty() || (plus && digits.front() == '-')) return std::nullopt;
+    int value = 0;
+    auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    if (ec != std::errc() || end != digits.data() + digits.size()) return std::nullopt;
+    return value;
+}
+
+std::string usageText() {
+    return "usage: m3g <command> [options]\n"
+           "  info [FILE] [--json] [--lenient] [--time T]\n"
+           "            without FILE: the library version and Graphics3D::getProperties();\n"
+           "            with FILE: header, object counts, scene tree, warnings;\n"
+           "            --json dumps every object's properties, --time T animates to T ms first\n"
+           "  convert IN OUT [--compress] [--lenient]\n"
+           "            load IN and save it as OUT (zlib sections with --compress)\n"
+           "  version   print the library version\n"
+           "  help      print this text\n";
+}
+
+CliArgs parseCliArgs(std::span<const std::string_view> args) {
+    CliArgs out;
+    if (args.empty()) throw CliError("no command given");
+    // --help / -h anywhere (before "--") wins over everything else.
+    for (std::string_view a : args) {
+        if (a == "--") break;
+        if (a == "--help" || a == "-h") {
+            out.command = "help";
+            return out;
+        }
+    }
+    const std::string_view cmdName = args[0];
+    if (!cmdName.empty() && cmdName.front() == '-' && cmdName != "-")
+        throw CliError("expected a command before option " + quoted(cmdName));
+    const CommandSpec* cmd = findCommand(cmdName);
+    if (!cmd) throw CliError("unknown command " + quoted(cmdName));
+    out.command = std::string(cmdName);
+
+    bool optionsEnded = false;
+    for (std::size_t i = 1; i < args.size(); ++i) {
+        const std::string_view a = args[i];
+        const bool isOption = !optionsEnded && a.size() > 1 && a.front() == '-';
+        if (!isOption) {
+            out.files.emplace_back(a);
+            continue;
+        }
+        if (a == "--") {
+            optionsEnded = true;
+            continue;
+        }
+        std::string_view name = a;
+        std::optional<std::string_view> inlineValue;
+        if (auto eq = a.find('='); eq != std::string_view::npos && a.starts_with("--")) {
+            name = a.substr(0, eq);
+            inlineValue = a.substr(eq + 1);
+        }
+        auto flag = [&](bool allowed, bool& target) {
+            requireOption(allowed, name, *cmd);
+            if (inlineValue) throw CliError("option " + std::string(name) + " takes no value");
+            target = true;
+        };
+        if (name == "--json") {
+            flag(cmd->json, out.json);
+        } else if (name == "--lenient") {
+            flag(cmd->lenient, out.lenient);
+        } else if (name == "--compress") {
+            flag(cmd->compress, out.compress);
+        } else if (name == "--time") {
+            requireOption(cmd->time, name, *cmd);
+            if (out.time) throw CliError("option --time given more than once");
+            std::string_view value;
+            if (inlineValue) {
+                value = *inlineValue;
+            } else {
+                if (i + 1 >= args.size()) throw CliError("option --time needs a value (world time in ms)");
+                value = args[++i];
+            }
+            const auto t = parseInt(value);
+            if (!t) throw CliError("option --time expects an integer (world time in ms), got " + quoted(value));
+            out.time = *t;
+        } else {
+            throw CliError("unknown option " + quoted(a));
+        }
+    }
+
+    const int n = static_cast<int>(out.files.size());
+    if (n < cmd->minFiles) {
+        if (out.command == "convert")
+            throw CliError(n == 0 ? "convert needs an input and an output file" : "convert needs an output file");
+        throw CliError("'" + out.command + "' needs a file");
+    }
+    if (n > cmd->maxFiles)
+        throw CliError("unexpected argument " + quoted(out.files[static_cast<std::size_t>(cmd->maxFiles)]) +
+                       " for '" + out.command + "'");
+    return out;
+}
+
+CliArgs parseCliArgs(int argc, const char* const* argv) {
+    std::vector<std::string_view> args;
+    for (int i = 1; i < argc; ++i) args.emplace_back(argv[i]);
+    return parseCliArgs(std::span<const std::string_view>(args));
+}
+
+}  // namespace m3gcli
