@@ -152,7 +152,7 @@ Ref<Object3D> loadExternal(const std::string& uri, const detail::ByteReader& rea
     if (!bytes) {
         const std::string m = str("external reference '", uri, "': file '", path.string(), "' not found");
         if (!session.options.lenient) reader.fail(m);
-        session.warnings.push_back(reader.where(m + "; skipped, references to it read as null"));
+        reader.warn(m + "; skipped, references to it read as null");
         return nullptr;
     }
     session.chain.push_back(canonical);
