@@ -85,6 +85,14 @@ struct MeshBlock {
     std::vector<Ref<Appearance>> appearances;
 };
 
+/// A span that is never "null" (Java null is a span whose data() is null),
+/// also for an empty vector.
+template <class T>
+std::span<const T> nonNull(const std::vector<T>& v) {
+    static const T kNone[1] = {};
+    return v.empty() ? std::span<const T>(kNone, 0) : std::span<const T>(v);
+}
+
 const char* exceptionKind(const std::exception& e) {
     if (dynamic_cast<const IllegalArgumentException*>(&e)) return "IllegalArgumentException";
     if (dynamic_cast<const IndexOutOfBoundsException*>(&e)) return "IndexOutOfBoundsException";
@@ -617,17 +625,8 @@ private:
             x = static_cast<int>(v);
         }
         if (implicit && start > 65535) r.failAt(encPos + 1, str("startIndex ", start, " out of range [0, 65535]"));
-        // Keep data() non-null for empty arrays (a null span is Java null).
-        static const int kEmpty = 0;
-        std::span<const int> lengthSpan = lengths.empty() ? std::span<const int>(&kEmpty, 0) : std::span<const int>(lengths);
-        Ref<TriangleStripArray> t;
-        if (implicit) {
-            t = make<TriangleStripArray>(static_cast<int>(start), lengthSpan);
-        } else {
-            std::span<const int> indexSpan =
-                indices.empty() ? std::span<const int>(&kEmpty, 0) : std::span<const int>(indices);
-            t = make<TriangleStripArray>(indexSpan, lengthSpan);
-        }
+        Ref<TriangleStripArray> t = implicit ? make<TriangleStripArray>(static_cast<int>(start), nonNull(lengths))
+                                             : make<TriangleStripArray>(nonNull(indices), nonNull(lengths));
         apply(*t, b);
         return t;
     }
@@ -674,8 +673,7 @@ private:
 
     Ref<Object3D> mesh(ByteReader& r) {
         const MeshBlock b = readMesh(r);
-        Ref<Mesh> m = make<Mesh>(b.vertexBuffer.get(), std::span<const Ref<IndexBuffer>>(b.indexBuffers),
-                                 std::span<const Ref<Appearance>>(b.appearances));
+        Ref<Mesh> m = make<Mesh>(b.vertexBuffer.get(), nonNull(b.indexBuffers), nonNull(b.appearances));
         apply(*m, b.node);
         return m;
     }
@@ -691,12 +689,8 @@ private:
             targets.emplace_back(ref<VertexBuffer>(r, "morphTarget", "VertexBuffer"));
             weights.push_back(r.readFloat32());
         }
-        static const Ref<VertexBuffer> kNoTargets[1];
-        std::span<const Ref<VertexBuffer>> targetSpan =
-            targets.empty() ? std::span<const Ref<VertexBuffer>>(kNoTargets, 0) : std::span<const Ref<VertexBuffer>>(targets);
-        Ref<MorphingMesh> m =
-            make<MorphingMesh>(b.vertexBuffer.get(), targetSpan, std::span<const Ref<IndexBuffer>>(b.indexBuffers),
-                               std::span<const Ref<Appearance>>(b.appearances));
+        Ref<MorphingMesh> m = make<MorphingMesh>(b.vertexBuffer.get(), nonNull(targets), nonNull(b.indexBuffers),
+                                                 nonNull(b.appearances));
         apply(*m, b.node);
         if (!weights.empty()) m->setWeights(weights);
         return m;
@@ -725,8 +719,8 @@ private:
             else bones.push_back(std::move(bone));
             touchedSkipped_ = touchedSkipped_ || before;
         }
-        Ref<SkinnedMesh> m = make<SkinnedMesh>(b.vertexBuffer.get(), std::span<const Ref<IndexBuffer>>(b.indexBuffers),
-                                               std::span<const Ref<Appearance>>(b.appearances), skeleton.get());
+        Ref<SkinnedMesh> m = make<SkinnedMesh>(b.vertexBuffer.get(), nonNull(b.indexBuffers), nonNull(b.appearances),
+                                               skeleton.get());
         apply(*m, b.node);
         for (const auto& bone : bones)
             m->addTransform(bone.node.get(), bone.weight, static_cast<int>(bone.first), static_cast<int>(bone.count));
