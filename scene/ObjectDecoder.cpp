@@ -1,11 +1,13 @@
 // Per-class decoding of .m3g object records (spec digest §6.5–6.8).
 #include "ObjectDecoder.h"
 
+#include <algorithm>
 #include <array>
 #include <climits>
 #include <memory>
 #include <new>
 #include <typeinfo>
+#include <unordered_map>
 #include <utility>
 
 #include <m3g/AnimationController.h>
@@ -45,6 +47,11 @@ namespace {
 /// the file, so its size must be bounded explicitly).
 constexpr std::uint32_t kMaxMutableImageDimension = 16384;
 constexpr std::uint64_t kMaxMutableImageBytes = 64ull << 20;
+/// Deepest node hierarchy accepted (Group children, SkinnedMesh skeletons).
+/// Traversal and destruction recurse over the hierarchy, so a hostile file
+/// with a chain of 100 000 nested groups must not get through; real scenes
+/// nest a few dozen levels.
+constexpr int kMaxNodeDepth = 1000;
 
 // ---- inherited blocks (§6.5), read first, applied once the object exists ----
 
@@ -126,6 +133,7 @@ private:
     DecodedObjects out_;
     std::uint32_t current_ = 0;   // ObjectIndex of the object being decoded
     bool touchedSkipped_ = false;  // it referred to a skipped object
+    std::unordered_map<const Node*, int> height_;  // node hierarchy height
 
     void decodeOne(const M3GObject& o) {
         current_ = o.index;
@@ -151,6 +159,19 @@ private:
         if (!obj) {
             out_.skipped[o.index - 2] = true;
             return;
+        }
+        if (const Node* n = dynamic_cast<const Node*>(obj.get())) {
+            std::vector<Node*> kids;
+            n->collectChildren(kids);
+            int h = 1;
+            for (const Node* k : kids) {
+                auto it = height_.find(k);
+                h = std::max(h, 1 + (it == height_.end() ? 1 : it->second));
+            }
+            if (h > kMaxNodeDepth)
+                throw IOException(str(objectContext(o), ": node hierarchy deeper than ", kMaxNodeDepth,
+                                      " levels at byte offset ", o.dataOffset));
+            height_[n] = h;
         }
         out_.table[o.index - 2] = std::move(obj);
     }
