@@ -44,6 +44,33 @@ struct LoadResult {
 };
 
 /// Reads .m3g files (and PNG images) into object graphs. Static only.
+///
+/// Decoding notes (spec digest §6–8):
+/// - Background clear flags are read in spec order: depthClearEnabled, then
+///   colorClearEnabled (§8.1; Nokia's core reads them the other way round).
+/// - Appearance.layer is a two's-complement signed byte (§8.2).
+/// - Null Appearance textures and null VertexBuffer arrays are not set (the
+///   slot stays empty), so a null slot past the unit count is no error.
+/// - User parameters become `std::shared_ptr<const UserParameters>` in the
+///   user object (none if the count is 0); a repeated parameter ID fails.
+/// - Every ObjectIndex must refer to an earlier object of the expected class
+///   (0 = null, 1 = the header, which no slot accepts). Each one read counts
+///   as a reference when the roots are chosen (alignment references,
+///   skeletons, bones, morph targets and animation tracks included).
+/// - External references: relative URIs resolve against the referencing
+///   file's folder; a nested .m3g gives its first root object, a PNG an
+///   immutable Image2D; loops fail, naming the chain of files.
+/// - Lenient loads skip an external reference whose file is missing: every
+///   ObjectIndex to it reads as null. Slots that accept null take it; list
+///   entries (Group children, SkinnedMesh bones, animation tracks) are left
+///   out; an object that cannot exist without it (its constructor or setter
+///   throws NullPointerException, e.g. a Texture2D without its image) is
+///   skipped too, and so on transitively. Each skip is a warning.
+/// - Limits against hostile input: node hierarchies deeper than 1000 levels
+///   and mutable images over 16384 pixels a side or 64 MiB fail.
+/// - A value an object setter rejects (IAE, IOOBE, ISE, NPE) fails the load
+///   with an IOException naming section, object index, type, byte offset and
+///   the setter's message. Loads are all-or-nothing.
 class Loader {
 public:
     Loader() = delete;

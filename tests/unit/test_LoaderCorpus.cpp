@@ -141,8 +141,15 @@ TEST(LoaderCorpus, EveryM3GFileLoadsOrFailsAsDocumented) {
         std::vector<Object3D*> roots;
         for (const auto& o : r.roots) roots.push_back(o.get());
         EXPECT_EQ(roots, expectedRoots) << rel;
-        std::cout << "[   loaded ] " << rel << ": " << r.objects.size() << " objects, " << r.roots.size()
-                  << " roots\n";
+        // A lenient load of a valid file gives the same objects and no warning.
+        LoaderOptions lenientOptions;
+        lenientOptions.lenient = true;
+        const auto lr = Loader::loadDetailed(path.string(), lenientOptions);
+        EXPECT_EQ(lr.objects.size(), r.objects.size()) << rel;
+        EXPECT_EQ(lr.roots.size(), r.roots.size()) << rel;
+        EXPECT_TRUE(lr.warnings.empty()) << rel;
+        std::cout << "[   loaded ] " << rel << ": " << r.objects.size() << " objects, " << r.roots.size() << " roots"
+                  << (r.hasExternalReferences ? ", with external references" : "") << "\n";
     }
     for (const auto& [folder, c] : perFolder)
         std::cout << "[  summary ] " << folder << ": " << c.loaded << " loaded, " << c.rejected << " rejected, "
