@@ -10,8 +10,67 @@
 
 namespace m3g {
 
+/// Options of one load call (engine extension, not Java API).
+struct LoaderOptions {
+    /// Strict (false, the default) matches what Nokia's implementation accepts.
+    /// Lenient accepts the exporter faults seen in real files (wrong or zero
+    /// TotalFileSize, header version 1.x, -0.0 floats, a compressed header
+    /// section) and skips external references whose file is missing; every
+    /// tolerated fault is recorded in LoadResult::warnings.
+    bool lenient = false;
+};
+
+/// Everything a load produced (engine extension, not Java API).
+struct LoadResult {
+    /// Loaded objects referenced by no other loaded object, in file order
+    /// (what Loader::load returns).
+    std::vector<Ref<Object3D>> roots;
+    /// Every loaded object in file order (the header excluded). An external
+    /// reference contributes the object it loaded (the first root of a nested
+    /// .m3g, or the Image2D of a PNG); one skipped by a lenient load
+    /// contributes nothing. A PNG input gives its one Image2D.
+    std::vector<Ref<Object3D>> objects;
+    /// Header fields of the .m3g file (0 / false / empty for a PNG input).
+    int versionMajor = 0;
+    int versionMinor = 0;
+    bool hasExternalReferences = false;
+    std::uint32_t totalFileSize = 0;
+    std::uint32_t approximateContentSize = 0;
+    std::string authoringField;
+    /// Faults tolerated by a lenient load, in the order met (also those of
+    /// externally referenced files, prefixed with their name). Always empty
+    /// for a strict load.
+    std::vector<std::string> warnings;
+};
+
 /// Reads .m3g files (and PNG images) into object graphs. Static only.
-/// The implementation is the loader work item; this header fixes the API.
+///
+/// Decoding notes (spec digest §6–8):
+/// - Background clear flags are read in spec order: depthClearEnabled, then
+///   colorClearEnabled (§8.1; Nokia's core reads them the other way round).
+/// - Appearance.layer is a two's-complement signed byte (§8.2).
+/// - Null Appearance textures and null VertexBuffer arrays are not set (the
+///   slot stays empty), so a null slot past the unit count is no error.
+/// - User parameters become `std::shared_ptr<const UserParameters>` in the
+///   user object (none if the count is 0); a repeated parameter ID fails.
+/// - Every ObjectIndex must refer to an earlier object of the expected class
+///   (0 = null, 1 = the header, which no slot accepts). Each one read counts
+///   as a reference when the roots are chosen (alignment references,
+///   skeletons, bones, morph targets and animation tracks included).
+/// - External references: relative URIs resolve against the referencing
+///   file's folder; a nested .m3g gives its first root object, a PNG an
+///   immutable Image2D; loops fail, naming the chain of files.
+/// - Lenient loads skip an external reference whose file is missing: every
+///   ObjectIndex to it reads as null. Slots that accept null take it; list
+///   entries (Group children, SkinnedMesh bones, animation tracks) are left
+///   out; an object that cannot exist without it (its constructor or setter
+///   throws NullPointerException, e.g. a Texture2D without its image) is
+///   skipped too, and so on transitively. Each skip is a warning.
+/// - Limits against hostile input: node hierarchies deeper than 1000 levels
+///   and mutable images over 16384 pixels a side or 64 MiB fail.
+/// - A value an object setter rejects (IAE, IOOBE, ISE, NPE) fails the load
+///   with an IOException naming section, object index, type, byte offset and
+///   the setter's message. Loads are all-or-nothing.
 class Loader {
 public:
     Loader() = delete;
@@ -22,7 +81,15 @@ public:
     static std::vector<Ref<Object3D>> load(const std::string& name);
     /// Loads from `data` starting at `offset`. NPE if `data` is null;
     /// IOOBE if offset < 0 or offset >= data.size(); IOException on error.
+    /// External references must be absolute (a path starting with '/' or a
+    /// file: URI).
     static std::vector<Ref<Object3D>> load(std::span<const std::uint8_t> data, int offset);
+
+    /// As load(name), with options and every detail of the load.
+    static LoadResult loadDetailed(const std::string& name, const LoaderOptions& options = {});
+    /// As load(data, offset), with options and every detail of the load.
+    static LoadResult loadDetailed(std::span<const std::uint8_t> data, int offset,
+                                   const LoaderOptions& options = {});
 };
 
 }  // namespace m3g
