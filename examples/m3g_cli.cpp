@@ -1,25 +1,27 @@
-// The m3g command-line tool. Subcommands grow with the project:
-//   m3g info        library version and Graphics3D::getProperties()
-//   m3g version     the version alone
+// The m3g command-line tool.
+//   m3g info                      library version and Graphics3D::getProperties()
+//   m3g info FILE [--json] [--lenient] [--time T]
+//                                 header, object counts, scene tree, warnings;
+//                                 --json dumps every object's getter values
+//   m3g convert IN OUT [--compress] [--lenient]
+//                                 load and re-save as M3G 1.0
+//   m3g version
+// Exit status: 0 success, 1 load/save failure (the IOException message on
+// stderr), 2 bad command line.
 #include <cstdio>
-#include <cstring>
 #include <string>
 #include <type_traits>
 #include <variant>
+#include <vector>
 
 #include <m3g/m3g.h>
 
+#include "CliArgs.h"
+#include "ObjectDump.h"
+
 namespace {
 
-int usage(std::FILE* out) {
-    std::fprintf(out,
-                 "usage: m3g <command>\n"
-                 "  info      print the library version and Graphics3D::getProperties()\n"
-                 "  version   print the library version\n");
-    return out == stderr ? 2 : 0;
-}
-
-int info() {
+int libraryInfo() {
     std::printf("m3g-vk %s: M3G 1.1 (JSR-184) object model\n", m3g::kVersionString);
     std::printf("Graphics3D.getProperties():\n");
     for (const auto& [key, value] : m3g::Graphics3D::getProperties()) {
@@ -38,17 +40,87 @@ int info() {
     return 0;
 }
 
+std::vector<m3g::Object3D*> rawRoots(const std::vector<m3g::Ref<m3g::Object3D>>& roots) {
+    std::vector<m3g::Object3D*> out;
+    for (const auto& r : roots) out.push_back(r.get());
+    return out;
+}
+
+int fileInfo(const m3gcli::CliArgs& args) {
+    const std::string& file = args.files[0];
+    m3g::LoaderOptions options;
+    options.lenient = args.lenient;
+    const m3g::LoadResult result = m3g::Loader::loadDetailed(file, options);
+    if (args.time) {
+        for (const auto& r : result.roots) r->animate(*args.time);
+    }
+    const auto roots = rawRoots(result.roots);
+    if (args.json) {
+        m3gcli::DumpOptions dump;
+        dump.worldTime = args.time;
+        std::printf("%s\n", m3gcli::dumpJson(roots, dump).c_str());
+        return 0;
+    }
+    std::printf("file: %s\n", file.c_str());
+    if (result.versionMajor || result.versionMinor || result.totalFileSize) {
+        std::printf("version: %d.%d\n", result.versionMajor, result.versionMinor);
+        std::printf("authoring field: %s\n", result.authoringField.c_str());
+        std::printf("total file size: %u bytes\n", static_cast<unsigned>(result.totalFileSize));
+        std::printf("approximate content size: %u bytes\n", static_cast<unsigned>(result.approximateContentSize));
+        std::printf("external references: %s\n", result.hasExternalReferences ? "yes" : "no");
+    } else {
+        std::printf("format: PNG image\n");
+    }
+    std::printf("objects: %zu loaded, %zu roots\n", result.objects.size(), result.roots.size());
+    for (const auto& [cls, n] : m3gcli::countByClass(roots)) std::printf("  %-22s %d\n", cls.c_str(), n);
+    if (args.time) std::printf("animated to world time %d ms\n", *args.time);
+    std::printf("scene:\n%s", m3gcli::dumpTree(roots).c_str());
+    if (!result.warnings.empty()) {
+        std::printf("warnings (%zu):\n", result.warnings.size());
+        for (const auto& w : result.warnings) std::printf("  %s\n", w.c_str());
+    }
+    return 0;
+}
+
+int convert(const m3gcli::CliArgs& args) {
+    m3g::LoaderOptions options;
+    options.lenient = args.lenient;
+    const m3g::LoadResult result = m3g::Loader::loadDetailed(args.files[0], options);
+    for (const auto& w : result.warnings) std::fprintf(stderr, "m3g: warning: %s\n", w.c_str());
+    m3g::SaverOptions saveOptions;
+    saveOptions.compress = args.compress;
+    const auto roots = rawRoots(result.roots);
+    m3g::Saver::save(args.files[1], roots, saveOptions);
+    std::printf("wrote %s: %zu root objects%s\n", args.files[1].c_str(), roots.size(),
+                args.compress ? " (zlib)" : "");
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc < 2) return usage(stderr);
-    const std::string cmd = argv[1];
-    if (cmd == "info") return info();
-    if (cmd == "version") {
-        std::printf("%s\n", m3g::kVersionString);
-        return 0;
+    m3gcli::CliArgs args;
+    try {
+        args = m3gcli::parseCliArgs(argc, argv);
+    } catch (const m3gcli::CliError& e) {
+        std::fprintf(stderr, "m3g: %s\n%s", e.what(), m3gcli::usageText().c_str());
+        return 2;
     }
-    if (cmd == "help" || cmd == "--help" || cmd == "-h") return usage(stdout);
-    std::fprintf(stderr, "m3g: unknown command '%s'\n", cmd.c_str());
-    return usage(stderr);
+    try {
+        if (args.command == "help") {
+            std::printf("%s", m3gcli::usageText().c_str());
+            return 0;
+        }
+        if (args.command == "version") {
+            std::printf("%s\n", m3g::kVersionString);
+            return 0;
+        }
+        if (args.command == "info") return args.files.empty() ? libraryInfo() : fileInfo(args);
+        if (args.command == "convert") return convert(args);
+    } catch (const m3g::Exception& e) {
+        std::fprintf(stderr, "m3g: %s\n", e.what());
+        return 1;
+    }
+    std::fprintf(stderr, "m3g: unknown command '%s'\n%s", args.command.c_str(), m3gcli::usageText().c_str());
+    return 2;
 }
