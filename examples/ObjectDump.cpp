@@ -8,13 +8,12 @@
 #include <cstdio>
 #include <initializer_list>
 #include <memory>
-#include <string_view>
 #include <unordered_map>
 #include <unordered_set>
 #include <utility>
-#include <variant>
 
 #include <m3g/m3g.h>
+#include <nlohmann/json.hpp>
 
 namespace m3gcli {
 
@@ -23,129 +22,13 @@ using namespace m3g;
 namespace {
 
 // ---------------------------------------------------------------------------
-// A minimal JSON document model and writer.
+// The document: nlohmann's JSON with insertion-ordered objects (members are
+// written in the order they are set) and single-precision numbers, so that
+// every float is written in the shortest form that reads back as the same
+// float. Non-finite floats are written as null by the serializer.
 
-class JsonValue {
-public:
-    using Array = std::vector<JsonValue>;
-    using Members = std::vector<std::pair<std::string, JsonValue>>;
-    struct Object {
-        Members members;
-    };
-
-    JsonValue() = default;
-    JsonValue(std::nullptr_t) {}
-    JsonValue(bool b) : v_(b) {}
-    JsonValue(int i) : v_(static_cast<long long>(i)) {}
-    JsonValue(long long i) : v_(i) {}
-    JsonValue(float f) : v_(f) {}
-    JsonValue(const char* s) : v_(std::string(s)) {}
-    JsonValue(std::string s) : v_(std::move(s)) {}
-    JsonValue(Array a) : v_(std::move(a)) {}
-    JsonValue(Object o) : v_(std::move(o)) {}
-
-    static JsonValue array() { return JsonValue(Array{}); }
-    static JsonValue object() { return JsonValue(Object{}); }
-
-    /// Appends to an array.
-    JsonValue& add(JsonValue v) {
-        std::get<Array>(v_).push_back(std::move(v));
-        return *this;
-    }
-    /// Appends a member to an object (keys are written in insertion order).
-    JsonValue& set(std::string key, JsonValue v) {
-        std::get<Object>(v_).members.emplace_back(std::move(key), std::move(v));
-        return *this;
-    }
-
-    void write(std::string& out, int indent) const {
-        std::visit([&](const auto& x) { writeValue(out, x, indent); }, v_);
-    }
-
-private:
-    bool isScalar() const { return !std::holds_alternative<Array>(v_) && !std::holds_alternative<Object>(v_); }
-
-    static void writeValue(std::string& out, std::monostate, int) { out += "null"; }
-    static void writeValue(std::string& out, bool b, int) { out += b ? "true" : "false"; }
-    static void writeValue(std::string& out, long long i, int) { out += std::to_string(i); }
-    static void writeValue(std::string& out, float f, int) {
-        if (!std::isfinite(f)) {
-            out += "null";
-            return;
-        }
-        char buf[64];
-        // Shortest representation that reads back as the same float.
-        auto res = std::to_chars(buf, buf + sizeof buf, f);
-        out.append(buf, res.ptr);
-    }
-    static void writeValue(std::string& out, const std::string& s, int) { writeString(out, s); }
-    static void writeValue(std::string& out, const Array& a, int indent) {
-        if (a.empty()) {
-            out += "[]";
-            return;
-        }
-        const bool inlined = std::all_of(a.begin(), a.end(), [](const JsonValue& e) { return e.isScalar(); });
-        if (inlined) {
-            out += '[';
-            for (std::size_t i = 0; i < a.size(); ++i) {
-                if (i) out += ", ";
-                a[i].write(out, indent);
-            }
-            out += ']';
-            return;
-        }
-        out += "[\n";
-        for (std::size_t i = 0; i < a.size(); ++i) {
-            out.append(static_cast<std::size_t>(indent + 2), ' ');
-            a[i].write(out, indent + 2);
-            out += i + 1 < a.size() ? ",\n" : "\n";
-        }
-        out.append(static_cast<std::size_t>(indent), ' ');
-        out += ']';
-    }
-    static void writeValue(std::string& out, const Object& o, int indent) {
-        if (o.members.empty()) {
-            out += "{}";
-            return;
-        }
-        out += "{\n";
-        for (std::size_t i = 0; i < o.members.size(); ++i) {
-            out.append(static_cast<std::size_t>(indent + 2), ' ');
-            writeString(out, o.members[i].first);
-            out += ": ";
-            o.members[i].second.write(out, indent + 2);
-            out += i + 1 < o.members.size() ? ",\n" : "\n";
-        }
-        out.append(static_cast<std::size_t>(indent), ' ');
-        out += '}';
-    }
-    static void writeString(std::string& out, std::string_view s) {
-        out += '"';
-        for (char c : s) {
-            const auto u = static_cast<unsigned char>(c);
-            switch (c) {
-            case '"': out += "\\\""; break;
-            case '\\': out += "\\\\"; break;
-            case '\n': out += "\\n"; break;
-            case '\r': out += "\\r"; break;
-            case '\t': out += "\\t"; break;
-            case '\b': out += "\\b"; break;
-            case '\f': out += "\\f"; break;
-            default:
-                if (u < 0x20) {
-                    char buf[8];
-                    std::snprintf(buf, sizeof buf, "\\u%04x", u);
-                    out += buf;
-                } else {
-                    out += c;
-                }
-            }
-        }
-        out += '"';
-    }
-
-    std::variant<std::monostate, bool, long long, float, std::string, Array, Object> v_;
-};
+using Json = nlohmann::basic_json<nlohmann::ordered_map, std::vector, std::string, bool, std::int64_t,
+                                  std::uint64_t, float>;
 
 // ---------------------------------------------------------------------------
 // Traversal.
@@ -180,10 +63,10 @@ IdMap makeIds(const std::vector<Object3D*>& objects) {
 // ---------------------------------------------------------------------------
 // Value helpers.
 
-JsonValue idOf(const IdMap& ids, const Object3D* o) {
+Json idOf(const IdMap& ids, const Object3D* o) {
     if (!o) return nullptr;
     auto it = ids.find(o);
-    return it == ids.end() ? JsonValue() : JsonValue(it->second);
+    return it == ids.end() ? Json() : Json(it->second);
 }
 
 std::string hex32(std::uint32_t v) {
@@ -191,7 +74,7 @@ std::string hex32(std::uint32_t v) {
     std::snprintf(buf, sizeof buf, "0x%08X", static_cast<unsigned>(v));
     return buf;
 }
-JsonValue color(int argb) { return hex32(static_cast<std::uint32_t>(argb)); }
+Json color(int argb) { return hex32(static_cast<std::uint32_t>(argb)); }
 
 std::string enumName(int value, std::initializer_list<std::pair<int, const char*>> names) {
     for (const auto& [v, n] : names)
@@ -199,17 +82,17 @@ std::string enumName(int value, std::initializer_list<std::pair<int, const char*
     return std::to_string(value);  // not a known constant: its decimal value
 }
 
-JsonValue floats(std::span<const float> v) {
-    JsonValue a = JsonValue::array();
-    for (float f : v) a.add(f);
+Json floats(std::span<const float> v) {
+    Json a = Json::array();
+    for (float f : v) a.push_back(f);
     return a;
 }
-JsonValue ints(std::span<const int> v) {
-    JsonValue a = JsonValue::array();
-    for (int i : v) a.add(i);
+Json ints(std::span<const int> v) {
+    Json a = Json::array();
+    for (int i : v) a.push_back(i);
     return a;
 }
-JsonValue matrix(const Transform& t) {
+Json matrix(const Transform& t) {
     float m[16];
     t.get(m);
     return floats(m);
@@ -295,251 +178,251 @@ struct Dumper {
     const IdMap& ids;
     const DumpOptions& opt;
 
-    JsonValue ref(const Object3D* o) const { return idOf(ids, o); }
+    Json ref(const Object3D* o) const { return idOf(ids, o); }
 
-    void object3D(const Object3D* o, JsonValue& j) const {
-        j.set("id", idOf(ids, o));
-        j.set("class", o->getClassName());
-        j.set("userID", o->getUserID());
+    void object3D(const Object3D* o, Json& j) const {
+        j["id"] = idOf(ids, o);
+        j["class"] = o->getClassName();
+        j["userID"] = o->getUserID();
         const UserParameters* params = userParameters(o);
         const std::any& u = o->getUserObject();
-        j.set("userObject", params ? JsonValue("UserParameters") : u.has_value() ? JsonValue("other") : JsonValue());
+        j["userObject"] = params ? Json("UserParameters") : u.has_value() ? Json("other") : Json();
         if (params) {
-            JsonValue p = JsonValue::object();
-            for (const auto& [key, bytes] : *params) p.set(std::to_string(key), hexBytes(bytes));
-            j.set("userParameters", std::move(p));
+            Json p = Json::object();
+            for (const auto& [key, bytes] : *params) p[std::to_string(key)] = hexBytes(bytes);
+            j["userParameters"] = std::move(p);
         } else {
-            j.set("userParameters", nullptr);
+            j["userParameters"] = nullptr;
         }
-        JsonValue tracks = JsonValue::array();
-        for (int i = 0; i < o->getAnimationTrackCount(); ++i) tracks.add(ref(o->getAnimationTrack(i).get()));
-        j.set("animationTracks", std::move(tracks));
+        Json tracks = Json::array();
+        for (int i = 0; i < o->getAnimationTrackCount(); ++i) tracks.push_back(ref(o->getAnimationTrack(i).get()));
+        j["animationTracks"] = std::move(tracks);
         std::vector<Ref<Object3D>> refs(static_cast<std::size_t>(o->getReferences()));
         if (!refs.empty()) o->getReferences(refs);
-        JsonValue r = JsonValue::array();
-        for (const auto& x : refs) r.add(ref(x.get()));
-        j.set("references", std::move(r));
+        Json r = Json::array();
+        for (const auto& x : refs) r.push_back(ref(x.get()));
+        j["references"] = std::move(r);
     }
 
-    void transformable(const Transformable* t, JsonValue& j) const {
+    void transformable(const Transformable* t, Json& j) const {
         float v[4];
         t->getTranslation(v);
-        j.set("translation", floats(std::span<const float>(v, 3)));
+        j["translation"] = floats(std::span<const float>(v, 3));
         t->getOrientation(v);
-        j.set("orientation", floats(std::span<const float>(v, 4)));  // angle, axis x, y, z
+        j["orientation"] = floats(std::span<const float>(v, 4));  // angle, axis x, y, z
         t->getScale(v);
-        j.set("scale", floats(std::span<const float>(v, 3)));
+        j["scale"] = floats(std::span<const float>(v, 3));
         Transform m;
         t->getTransform(&m);
-        j.set("transform", matrix(m));
+        j["transform"] = matrix(m);
         t->getCompositeTransform(&m);
-        j.set("compositeTransform", matrix(m));
+        j["compositeTransform"] = matrix(m);
     }
 
-    void node(const Node* n, JsonValue& j) const {
-        j.set("parent", ref(n->getParent().get()));
-        j.set("renderingEnabled", n->isRenderingEnabled());
-        j.set("pickingEnabled", n->isPickingEnabled());
-        j.set("alphaFactor", n->getAlphaFactor());
-        j.set("scope", n->getScope());
-        JsonValue a = JsonValue::object();
-        a.set("zTarget", alignmentTargetName(n->getAlignmentTarget(Node::Z_AXIS)));
-        a.set("zReference", ref(n->getAlignmentReference(Node::Z_AXIS).get()));
-        a.set("yTarget", alignmentTargetName(n->getAlignmentTarget(Node::Y_AXIS)));
-        a.set("yReference", ref(n->getAlignmentReference(Node::Y_AXIS).get()));
-        j.set("alignment", std::move(a));
+    void node(const Node* n, Json& j) const {
+        j["parent"] = ref(n->getParent().get());
+        j["renderingEnabled"] = n->isRenderingEnabled();
+        j["pickingEnabled"] = n->isPickingEnabled();
+        j["alphaFactor"] = n->getAlphaFactor();
+        j["scope"] = n->getScope();
+        Json a = Json::object();
+        a["zTarget"] = alignmentTargetName(n->getAlignmentTarget(Node::Z_AXIS));
+        a["zReference"] = ref(n->getAlignmentReference(Node::Z_AXIS).get());
+        a["yTarget"] = alignmentTargetName(n->getAlignmentTarget(Node::Y_AXIS));
+        a["yReference"] = ref(n->getAlignmentReference(Node::Y_AXIS).get());
+        j["alignment"] = std::move(a);
     }
 
-    void group(const Group* g, JsonValue& j) const {
-        JsonValue c = JsonValue::array();
-        for (int i = 0; i < g->getChildCount(); ++i) c.add(ref(g->getChild(i).get()));
-        j.set("childCount", g->getChildCount());
-        j.set("children", std::move(c));
+    void group(const Group* g, Json& j) const {
+        Json c = Json::array();
+        for (int i = 0; i < g->getChildCount(); ++i) c.push_back(ref(g->getChild(i).get()));
+        j["childCount"] = g->getChildCount();
+        j["children"] = std::move(c);
     }
 
-    void world(const World* w, JsonValue& j) const {
-        j.set("activeCamera", ref(w->getActiveCamera().get()));
-        j.set("background", ref(w->getBackground().get()));
+    void world(const World* w, Json& j) const {
+        j["activeCamera"] = ref(w->getActiveCamera().get());
+        j["background"] = ref(w->getBackground().get());
     }
 
-    void camera(const Camera* c, JsonValue& j) const {
+    void camera(const Camera* c, Json& j) const {
         float p[4];
         const int type = c->getProjection(std::span<float>(p));
-        j.set("projection", projectionName(type));
-        j.set("projectionParams", type == Camera::GENERIC ? JsonValue() : floats(p));
+        j["projection"] = projectionName(type);
+        j["projectionParams"] = type == Camera::GENERIC ? Json() : floats(p);
         Transform m;
         try {
             c->getProjection(&m);
-            j.set("projectionMatrix", matrix(m));
+            j["projectionMatrix"] = matrix(m);
         } catch (const ArithmeticException&) {
-            j.set("projectionMatrix", nullptr);  // near == far
+            j["projectionMatrix"] = nullptr;  // near == far
         }
     }
 
-    void light(const Light* l, JsonValue& j) const {
-        j.set("mode", lightModeName(l->getMode()));
-        j.set("color", color(l->getColor()));
-        j.set("intensity", l->getIntensity());
-        j.set("spotAngle", l->getSpotAngle());
-        j.set("spotExponent", l->getSpotExponent());
+    void light(const Light* l, Json& j) const {
+        j["mode"] = lightModeName(l->getMode());
+        j["color"] = color(l->getColor());
+        j["intensity"] = l->getIntensity();
+        j["spotAngle"] = l->getSpotAngle();
+        j["spotExponent"] = l->getSpotExponent();
         const float att[] = {l->getConstantAttenuation(), l->getLinearAttenuation(), l->getQuadraticAttenuation()};
-        j.set("attenuation", floats(att));
+        j["attenuation"] = floats(att);
     }
 
-    void mesh(const Mesh* m, JsonValue& j) const {
-        j.set("vertexBuffer", ref(m->getVertexBuffer().get()));
-        j.set("submeshCount", m->getSubmeshCount());
-        JsonValue subs = JsonValue::array();
+    void mesh(const Mesh* m, Json& j) const {
+        j["vertexBuffer"] = ref(m->getVertexBuffer().get());
+        j["submeshCount"] = m->getSubmeshCount();
+        Json subs = Json::array();
         for (int i = 0; i < m->getSubmeshCount(); ++i) {
-            JsonValue s = JsonValue::object();
-            s.set("indexBuffer", ref(m->getIndexBuffer(i).get()));
-            s.set("appearance", ref(m->getAppearance(i).get()));
-            subs.add(std::move(s));
+            Json s = Json::object();
+            s["indexBuffer"] = ref(m->getIndexBuffer(i).get());
+            s["appearance"] = ref(m->getAppearance(i).get());
+            subs.push_back(std::move(s));
         }
-        j.set("submeshes", std::move(subs));
+        j["submeshes"] = std::move(subs);
     }
 
-    void morphingMesh(const MorphingMesh* m, JsonValue& j) const {
-        JsonValue t = JsonValue::array();
-        for (int i = 0; i < m->getMorphTargetCount(); ++i) t.add(ref(m->getMorphTarget(i).get()));
-        j.set("morphTargets", std::move(t));
+    void morphingMesh(const MorphingMesh* m, Json& j) const {
+        Json t = Json::array();
+        for (int i = 0; i < m->getMorphTargetCount(); ++i) t.push_back(ref(m->getMorphTarget(i).get()));
+        j["morphTargets"] = std::move(t);
         std::vector<float> w(static_cast<std::size_t>(m->getMorphTargetCount()));
         if (!w.empty()) m->getWeights(w);
-        j.set("weights", floats(w));
+        j["weights"] = floats(w);
     }
 
-    void skinnedMesh(const SkinnedMesh* m, JsonValue& j) const {
-        j.set("skeleton", ref(m->getSkeleton().get()));
-        JsonValue bones = JsonValue::array();
+    void skinnedMesh(const SkinnedMesh* m, Json& j) const {
+        j["skeleton"] = ref(m->getSkeleton().get());
+        Json bones = Json::array();
         for (int i = 0; i < m->boneCount(); ++i) {
             Node* b = m->bone(i);
-            JsonValue e = JsonValue::object();
-            e.set("bone", ref(b));
+            Json e = Json::object();
+            e["bone"] = ref(b);
             if (b) {
-                e.set("vertexCount", m->getBoneVertices(b));
+                e["vertexCount"] = m->getBoneVertices(b);
                 Transform t;
                 m->getBoneTransform(b, &t);
-                e.set("atRestTransform", matrix(t));
+                e["atRestTransform"] = matrix(t);
             }
-            bones.add(std::move(e));
+            bones.push_back(std::move(e));
         }
-        j.set("bones", std::move(bones));
+        j["bones"] = std::move(bones);
     }
 
-    void sprite(const Sprite3D* s, JsonValue& j) const {
-        j.set("scaled", s->isScaled());
-        j.set("image", ref(s->getImage().get()));
-        j.set("appearance", ref(s->getAppearance().get()));
+    void sprite(const Sprite3D* s, Json& j) const {
+        j["scaled"] = s->isScaled();
+        j["image"] = ref(s->getImage().get());
+        j["appearance"] = ref(s->getAppearance().get());
         const int crop[] = {s->getCropX(), s->getCropY(), s->getCropWidth(), s->getCropHeight()};
-        j.set("crop", ints(crop));
+        j["crop"] = ints(crop);
     }
 
-    void appearance(const Appearance* a, JsonValue& j) const {
-        j.set("layer", a->getLayer());
-        j.set("compositingMode", ref(a->getCompositingMode().get()));
-        j.set("fog", ref(a->getFog().get()));
-        j.set("polygonMode", ref(a->getPolygonMode().get()));
-        j.set("material", ref(a->getMaterial().get()));
-        JsonValue t = JsonValue::array();
-        for (int i = 0; i < getLimits().numTextureUnits; ++i) t.add(ref(a->getTexture(i).get()));
-        j.set("textures", std::move(t));
+    void appearance(const Appearance* a, Json& j) const {
+        j["layer"] = a->getLayer();
+        j["compositingMode"] = ref(a->getCompositingMode().get());
+        j["fog"] = ref(a->getFog().get());
+        j["polygonMode"] = ref(a->getPolygonMode().get());
+        j["material"] = ref(a->getMaterial().get());
+        Json t = Json::array();
+        for (int i = 0; i < getLimits().numTextureUnits; ++i) t.push_back(ref(a->getTexture(i).get()));
+        j["textures"] = std::move(t);
     }
 
-    void compositingMode(const CompositingMode* c, JsonValue& j) const {
-        j.set("blending", enumName(c->getBlending(), {{CompositingMode::ALPHA, "ALPHA"},
-                                                      {CompositingMode::ALPHA_ADD, "ALPHA_ADD"},
-                                                      {CompositingMode::MODULATE, "MODULATE"},
-                                                      {CompositingMode::MODULATE_X2, "MODULATE_X2"},
-                                                      {CompositingMode::REPLACE, "REPLACE"}}));
-        j.set("alphaThreshold", c->getAlphaThreshold());
-        j.set("depthTestEnabled", c->isDepthTestEnabled());
-        j.set("depthWriteEnabled", c->isDepthWriteEnabled());
-        j.set("colorWriteEnabled", c->isColorWriteEnabled());
-        j.set("alphaWriteEnabled", c->isAlphaWriteEnabled());
-        j.set("depthOffsetFactor", c->getDepthOffsetFactor());
-        j.set("depthOffsetUnits", c->getDepthOffsetUnits());
+    void compositingMode(const CompositingMode* c, Json& j) const {
+        j["blending"] = enumName(c->getBlending(), {{CompositingMode::ALPHA, "ALPHA"},
+                                                    {CompositingMode::ALPHA_ADD, "ALPHA_ADD"},
+                                                    {CompositingMode::MODULATE, "MODULATE"},
+                                                    {CompositingMode::MODULATE_X2, "MODULATE_X2"},
+                                                    {CompositingMode::REPLACE, "REPLACE"}});
+        j["alphaThreshold"] = c->getAlphaThreshold();
+        j["depthTestEnabled"] = c->isDepthTestEnabled();
+        j["depthWriteEnabled"] = c->isDepthWriteEnabled();
+        j["colorWriteEnabled"] = c->isColorWriteEnabled();
+        j["alphaWriteEnabled"] = c->isAlphaWriteEnabled();
+        j["depthOffsetFactor"] = c->getDepthOffsetFactor();
+        j["depthOffsetUnits"] = c->getDepthOffsetUnits();
     }
 
-    void polygonMode(const PolygonMode* p, JsonValue& j) const {
-        j.set("culling", enumName(p->getCulling(), {{PolygonMode::CULL_BACK, "CULL_BACK"},
-                                                    {PolygonMode::CULL_FRONT, "CULL_FRONT"},
-                                                    {PolygonMode::CULL_NONE, "CULL_NONE"}}));
-        j.set("shading", enumName(p->getShading(), {{PolygonMode::SHADE_FLAT, "SHADE_FLAT"},
-                                                    {PolygonMode::SHADE_SMOOTH, "SHADE_SMOOTH"}}));
-        j.set("winding", enumName(p->getWinding(), {{PolygonMode::WINDING_CCW, "WINDING_CCW"},
-                                                    {PolygonMode::WINDING_CW, "WINDING_CW"}}));
-        j.set("twoSidedLightingEnabled", p->isTwoSidedLightingEnabled());
-        j.set("localCameraLightingEnabled", p->isLocalCameraLightingEnabled());
-        j.set("perspectiveCorrectionEnabled", p->isPerspectiveCorrectionEnabled());
+    void polygonMode(const PolygonMode* p, Json& j) const {
+        j["culling"] = enumName(p->getCulling(), {{PolygonMode::CULL_BACK, "CULL_BACK"},
+                                                  {PolygonMode::CULL_FRONT, "CULL_FRONT"},
+                                                  {PolygonMode::CULL_NONE, "CULL_NONE"}});
+        j["shading"] = enumName(p->getShading(), {{PolygonMode::SHADE_FLAT, "SHADE_FLAT"},
+                                                  {PolygonMode::SHADE_SMOOTH, "SHADE_SMOOTH"}});
+        j["winding"] = enumName(p->getWinding(), {{PolygonMode::WINDING_CCW, "WINDING_CCW"},
+                                                  {PolygonMode::WINDING_CW, "WINDING_CW"}});
+        j["twoSidedLightingEnabled"] = p->isTwoSidedLightingEnabled();
+        j["localCameraLightingEnabled"] = p->isLocalCameraLightingEnabled();
+        j["perspectiveCorrectionEnabled"] = p->isPerspectiveCorrectionEnabled();
     }
 
-    void material(const Material* m, JsonValue& j) const {
-        j.set("ambientColor", color(m->getColor(Material::AMBIENT)));
-        j.set("diffuseColor", color(m->getColor(Material::DIFFUSE)));
-        j.set("emissiveColor", color(m->getColor(Material::EMISSIVE)));
-        j.set("specularColor", color(m->getColor(Material::SPECULAR)));
-        j.set("shininess", m->getShininess());
-        j.set("vertexColorTrackingEnabled", m->isVertexColorTrackingEnabled());
+    void material(const Material* m, Json& j) const {
+        j["ambientColor"] = color(m->getColor(Material::AMBIENT));
+        j["diffuseColor"] = color(m->getColor(Material::DIFFUSE));
+        j["emissiveColor"] = color(m->getColor(Material::EMISSIVE));
+        j["specularColor"] = color(m->getColor(Material::SPECULAR));
+        j["shininess"] = m->getShininess();
+        j["vertexColorTrackingEnabled"] = m->isVertexColorTrackingEnabled();
     }
 
-    void fog(const Fog* f, JsonValue& j) const {
-        j.set("mode", enumName(f->getMode(), {{Fog::EXPONENTIAL, "EXPONENTIAL"}, {Fog::LINEAR, "LINEAR"}}));
-        j.set("color", color(f->getColor()));
-        j.set("density", f->getDensity());
-        j.set("nearDistance", f->getNearDistance());
-        j.set("farDistance", f->getFarDistance());
+    void fog(const Fog* f, Json& j) const {
+        j["mode"] = enumName(f->getMode(), {{Fog::EXPONENTIAL, "EXPONENTIAL"}, {Fog::LINEAR, "LINEAR"}});
+        j["color"] = color(f->getColor());
+        j["density"] = f->getDensity();
+        j["nearDistance"] = f->getNearDistance();
+        j["farDistance"] = f->getFarDistance();
     }
 
-    void background(const Background* b, JsonValue& j) const {
-        j.set("color", color(b->getColor()));
-        j.set("image", ref(b->getImage().get()));
+    void background(const Background* b, Json& j) const {
+        j["color"] = color(b->getColor());
+        j["image"] = ref(b->getImage().get());
         const std::initializer_list<std::pair<int, const char*>> modes = {{Background::BORDER, "BORDER"},
                                                                          {Background::REPEAT, "REPEAT"}};
-        j.set("imageModeX", enumName(b->getImageModeX(), modes));
-        j.set("imageModeY", enumName(b->getImageModeY(), modes));
+        j["imageModeX"] = enumName(b->getImageModeX(), modes);
+        j["imageModeY"] = enumName(b->getImageModeY(), modes);
         const int crop[] = {b->getCropX(), b->getCropY(), b->getCropWidth(), b->getCropHeight()};
-        j.set("crop", ints(crop));
-        j.set("colorClearEnabled", b->isColorClearEnabled());
-        j.set("depthClearEnabled", b->isDepthClearEnabled());
+        j["crop"] = ints(crop);
+        j["colorClearEnabled"] = b->isColorClearEnabled();
+        j["depthClearEnabled"] = b->isDepthClearEnabled();
     }
 
-    void image(const Image2D* im, JsonValue& j) const {
-        j.set("format", imageFormatName(im->getFormat()));
-        j.set("width", im->getWidth());
-        j.set("height", im->getHeight());
-        j.set("mutable", im->isMutable());
-        j.set("palettized", im->isPalettized());
-        j.set("pixelBytes", static_cast<long long>(im->pixels().size()));
-        j.set("pixelChecksum", hex32(checksum(im->pixels())));  // FNV-1a of the resolved pixels
+    void image(const Image2D* im, Json& j) const {
+        j["format"] = imageFormatName(im->getFormat());
+        j["width"] = im->getWidth();
+        j["height"] = im->getHeight();
+        j["mutable"] = im->isMutable();
+        j["palettized"] = im->isPalettized();
+        j["pixelBytes"] = static_cast<long long>(im->pixels().size());
+        j["pixelChecksum"] = hex32(checksum(im->pixels()));  // FNV-1a of the resolved pixels
     }
 
-    void texture(const Texture2D* t, JsonValue& j) const {
+    void texture(const Texture2D* t, Json& j) const {
         const std::initializer_list<std::pair<int, const char*>> filters = {
             {Texture2D::FILTER_BASE_LEVEL, "FILTER_BASE_LEVEL"},
             {Texture2D::FILTER_LINEAR, "FILTER_LINEAR"},
             {Texture2D::FILTER_NEAREST, "FILTER_NEAREST"}};
         const std::initializer_list<std::pair<int, const char*>> wraps = {{Texture2D::WRAP_CLAMP, "WRAP_CLAMP"},
                                                                          {Texture2D::WRAP_REPEAT, "WRAP_REPEAT"}};
-        j.set("image", ref(t->getImage().get()));
-        j.set("levelFilter", enumName(t->getLevelFilter(), filters));
-        j.set("imageFilter", enumName(t->getImageFilter(), filters));
-        j.set("wrappingS", enumName(t->getWrappingS(), wraps));
-        j.set("wrappingT", enumName(t->getWrappingT(), wraps));
-        j.set("blending", enumName(t->getBlending(), {{Texture2D::FUNC_ADD, "FUNC_ADD"},
-                                                      {Texture2D::FUNC_BLEND, "FUNC_BLEND"},
-                                                      {Texture2D::FUNC_DECAL, "FUNC_DECAL"},
-                                                      {Texture2D::FUNC_MODULATE, "FUNC_MODULATE"},
-                                                      {Texture2D::FUNC_REPLACE, "FUNC_REPLACE"}}));
-        j.set("blendColor", color(t->getBlendColor()));
+        j["image"] = ref(t->getImage().get());
+        j["levelFilter"] = enumName(t->getLevelFilter(), filters);
+        j["imageFilter"] = enumName(t->getImageFilter(), filters);
+        j["wrappingS"] = enumName(t->getWrappingS(), wraps);
+        j["wrappingT"] = enumName(t->getWrappingT(), wraps);
+        j["blending"] = enumName(t->getBlending(), {{Texture2D::FUNC_ADD, "FUNC_ADD"},
+                                                    {Texture2D::FUNC_BLEND, "FUNC_BLEND"},
+                                                    {Texture2D::FUNC_DECAL, "FUNC_DECAL"},
+                                                    {Texture2D::FUNC_MODULATE, "FUNC_MODULATE"},
+                                                    {Texture2D::FUNC_REPLACE, "FUNC_REPLACE"}});
+        j["blendColor"] = color(t->getBlendColor());
     }
 
-    void vertexArray(const VertexArray* va, JsonValue& j) const {
+    void vertexArray(const VertexArray* va, Json& j) const {
         const int n = va->getVertexCount();
         const int c = va->getComponentCount();
         const int shown = std::clamp(opt.maxVertices, 0, n);
-        j.set("vertexCount", n);
-        j.set("componentCount", c);
-        j.set("componentType", va->getComponentType());  // bytes per component
+        j["vertexCount"] = n;
+        j["componentCount"] = c;
+        j["componentType"] = va->getComponentType();  // bytes per component
         std::vector<int> values(static_cast<std::size_t>(shown) * static_cast<std::size_t>(c));
         if (shown > 0) {
             if (va->getComponentType() == 1) {
@@ -552,114 +435,114 @@ struct Dumper {
                 std::copy(raw.begin(), raw.end(), values.begin());
             }
         }
-        JsonValue rows = JsonValue::array();
+        Json rows = Json::array();
         for (int v = 0; v < shown; ++v)
-            rows.add(ints(std::span<const int>(values).subspan(static_cast<std::size_t>(v) * c, static_cast<std::size_t>(c))));
-        j.set("values", std::move(rows));
-        j.set("truncated", shown < n);
+            rows.push_back(ints(std::span<const int>(values).subspan(static_cast<std::size_t>(v) * c, static_cast<std::size_t>(c))));
+        j["values"] = std::move(rows);
+        j["truncated"] = shown < n;
     }
 
-    void vertexBuffer(const VertexBuffer* vb, JsonValue& j) const {
-        j.set("vertexCount", vb->getVertexCount());
+    void vertexBuffer(const VertexBuffer* vb, Json& j) const {
+        j["vertexCount"] = vb->getVertexCount();
         float sb[4] = {0, 0, 0, 0};
         if (Ref<VertexArray> p = vb->getPositions(std::span<float>(sb))) {
-            JsonValue e = JsonValue::object();
-            e.set("array", ref(p.get()));
-            e.set("scale", sb[0]);
-            e.set("bias", floats(std::span<const float>(sb + 1, 3)));
-            j.set("positions", std::move(e));
+            Json e = Json::object();
+            e["array"] = ref(p.get());
+            e["scale"] = sb[0];
+            e["bias"] = floats(std::span<const float>(sb + 1, 3));
+            j["positions"] = std::move(e);
         } else {
-            j.set("positions", nullptr);
+            j["positions"] = nullptr;
         }
-        j.set("normals", ref(vb->getNormals().get()));
-        j.set("colors", ref(vb->getColors().get()));
-        JsonValue tcs = JsonValue::array();
+        j["normals"] = ref(vb->getNormals().get());
+        j["colors"] = ref(vb->getColors().get());
+        Json tcs = Json::array();
         for (int i = 0; i < getLimits().numTextureUnits; ++i) {
             Ref<VertexArray> t = vb->getTexCoords(i);
             if (!t) {
-                tcs.add(nullptr);
+                tcs.push_back(nullptr);
                 continue;
             }
             const int nc = t->getComponentCount();
             std::vector<float> v(static_cast<std::size_t>(nc) + 1);
             vb->getTexCoords(i, v);
-            JsonValue e = JsonValue::object();
-            e.set("array", ref(t.get()));
-            e.set("scale", v[0]);
-            e.set("bias", floats(std::span<const float>(v).subspan(1)));
-            tcs.add(std::move(e));
+            Json e = Json::object();
+            e["array"] = ref(t.get());
+            e["scale"] = v[0];
+            e["bias"] = floats(std::span<const float>(v).subspan(1));
+            tcs.push_back(std::move(e));
         }
-        j.set("texCoords", std::move(tcs));
-        j.set("defaultColor", color(vb->getDefaultColor()));
+        j["texCoords"] = std::move(tcs);
+        j["defaultColor"] = color(vb->getDefaultColor());
     }
 
-    void indexBuffer(const IndexBuffer* ib, JsonValue& j) const {
+    void indexBuffer(const IndexBuffer* ib, Json& j) const {
         const int n = ib->getIndexCount();
         const int shown = std::clamp(opt.maxIndices, 0, n);
         std::vector<int> all(static_cast<std::size_t>(n));
         if (n > 0) ib->getIndices(all);
-        j.set("indexCount", n);
-        j.set("indices", ints(std::span<const int>(all).first(static_cast<std::size_t>(shown))));
-        j.set("truncated", shown < n);
+        j["indexCount"] = n;
+        j["indices"] = ints(std::span<const int>(all).first(static_cast<std::size_t>(shown)));
+        j["truncated"] = shown < n;
     }
 
-    void strips(const TriangleStripArray* t, JsonValue& j) const {
+    void strips(const TriangleStripArray* t, Json& j) const {
         const auto lengths = t->stripLengths();
         const std::size_t shown = std::min(lengths.size(), static_cast<std::size_t>(std::max(opt.maxIndices, 0)));
-        j.set("stripCount", static_cast<long long>(lengths.size()));
-        j.set("stripLengths", ints(lengths.first(shown)));
-        j.set("stripLengthsTruncated", shown < lengths.size());
+        j["stripCount"] = static_cast<long long>(lengths.size());
+        j["stripLengths"] = ints(lengths.first(shown));
+        j["stripLengthsTruncated"] = shown < lengths.size();
     }
 
-    void keyframes(const KeyframeSequence* k, JsonValue& j) const {
-        j.set("keyframeCount", k->getKeyframeCount());
-        j.set("componentCount", k->getComponentCount());
-        j.set("interpolation", enumName(k->getInterpolationType(), {{KeyframeSequence::LINEAR, "LINEAR"},
-                                                                    {KeyframeSequence::SLERP, "SLERP"},
-                                                                    {KeyframeSequence::SPLINE, "SPLINE"},
-                                                                    {KeyframeSequence::SQUAD, "SQUAD"},
-                                                                    {KeyframeSequence::STEP, "STEP"}}));
-        j.set("duration", k->getDuration());
-        j.set("repeatMode", enumName(k->getRepeatMode(), {{KeyframeSequence::CONSTANT, "CONSTANT"},
-                                                          {KeyframeSequence::LOOP, "LOOP"}}));
+    void keyframes(const KeyframeSequence* k, Json& j) const {
+        j["keyframeCount"] = k->getKeyframeCount();
+        j["componentCount"] = k->getComponentCount();
+        j["interpolation"] = enumName(k->getInterpolationType(), {{KeyframeSequence::LINEAR, "LINEAR"},
+                                                                  {KeyframeSequence::SLERP, "SLERP"},
+                                                                  {KeyframeSequence::SPLINE, "SPLINE"},
+                                                                  {KeyframeSequence::SQUAD, "SQUAD"},
+                                                                  {KeyframeSequence::STEP, "STEP"}});
+        j["duration"] = k->getDuration();
+        j["repeatMode"] = enumName(k->getRepeatMode(), {{KeyframeSequence::CONSTANT, "CONSTANT"},
+                                                        {KeyframeSequence::LOOP, "LOOP"}});
         const int vr[] = {k->getValidRangeFirst(), k->getValidRangeLast()};
-        j.set("validRange", ints(vr));
+        j["validRange"] = ints(vr);
         const int n = k->getKeyframeCount();
         const int shown = std::clamp(opt.maxKeyframes, 0, n);
-        JsonValue times = JsonValue::array();
-        JsonValue values = JsonValue::array();
+        Json times = Json::array();
+        Json values = Json::array();
         std::vector<float> v(static_cast<std::size_t>(k->getComponentCount()));
         for (int i = 0; i < shown; ++i) {
-            times.add(k->getKeyframe(i, v));
-            values.add(floats(v));
+            times.push_back(k->getKeyframe(i, v));
+            values.push_back(floats(v));
         }
-        j.set("keyframeTimes", std::move(times));
-        j.set("keyframeValues", std::move(values));
-        j.set("truncated", shown < n);
+        j["keyframeTimes"] = std::move(times);
+        j["keyframeValues"] = std::move(values);
+        j["truncated"] = shown < n;
     }
 
-    void track(const AnimationTrack* t, JsonValue& j) const {
-        j.set("targetProperty", propertyName(t->getTargetProperty()));
-        j.set("keyframeSequence", ref(t->getKeyframeSequence().get()));
-        j.set("controller", ref(t->getController().get()));
+    void track(const AnimationTrack* t, Json& j) const {
+        j["targetProperty"] = propertyName(t->getTargetProperty());
+        j["keyframeSequence"] = ref(t->getKeyframeSequence().get());
+        j["controller"] = ref(t->getController().get());
     }
 
-    void controller(const AnimationController* c, JsonValue& j) const {
+    void controller(const AnimationController* c, Json& j) const {
         const int interval[] = {c->getActiveIntervalStart(), c->getActiveIntervalEnd()};
-        j.set("activeInterval", ints(interval));
-        j.set("speed", c->getSpeed());
-        j.set("weight", c->getWeight());
-        j.set("refWorldTime", c->getRefWorldTime());
-        j.set("refSequenceTime", c->getPosition(c->getRefWorldTime()));
+        j["activeInterval"] = ints(interval);
+        j["speed"] = c->getSpeed();
+        j["weight"] = c->getWeight();
+        j["refWorldTime"] = c->getRefWorldTime();
+        j["refSequenceTime"] = c->getPosition(c->getRefWorldTime());
         if (opt.worldTime) {
-            j.set("worldTime", *opt.worldTime);
-            j.set("position", c->getPosition(*opt.worldTime));
-            j.set("active", c->isActive(*opt.worldTime));
+            j["worldTime"] = *opt.worldTime;
+            j["position"] = c->getPosition(*opt.worldTime);
+            j["active"] = c->isActive(*opt.worldTime);
         }
     }
 
-    JsonValue dump(const Object3D* o) const {
-        JsonValue j = JsonValue::object();
+    Json dump(const Object3D* o) const {
+        Json j = Json::object();
         object3D(o, j);
         if (auto* x = dynamic_cast<const Transformable*>(o)) transformable(x, j);
         if (auto* x = dynamic_cast<const Node*>(o)) node(x, j);
@@ -789,18 +672,19 @@ std::string dumpJson(std::span<Object3D* const> roots, const DumpOptions& option
     const IdMap ids = makeIds(objects);
     const Dumper dumper{ids, options};
 
-    JsonValue doc = JsonValue::object();
-    doc.set("objectCount", static_cast<int>(objects.size()));
-    JsonValue rootIds = JsonValue::array();
+    Json doc = Json::object();
+    doc["objectCount"] = static_cast<int>(objects.size());
+    Json rootIds = Json::array();
     for (Object3D* r : roots)
-        if (r) rootIds.add(idOf(ids, r));
-    doc.set("roots", std::move(rootIds));
-    JsonValue list = JsonValue::array();
-    for (const Object3D* o : objects) list.add(dumper.dump(o));
-    doc.set("objects", std::move(list));
+        if (r) rootIds.push_back(idOf(ids, r));
+    doc["roots"] = std::move(rootIds);
+    Json list = Json::array();
+    for (const Object3D* o : objects) list.push_back(dumper.dump(o));
+    doc["objects"] = std::move(list);
 
-    std::string out;
-    doc.write(out, 0);
+    // Strings are ASCII here (class and constant names, hex); replace rather
+    // than throw should a non-UTF-8 byte ever appear.
+    std::string out = doc.dump(2, ' ', false, Json::error_handler_t::replace);
     out += '\n';
     return out;
 }

@@ -35,8 +35,10 @@ struct DumpOptions {
 /// Every reachable object once, in id order (see above). Null roots are skipped.
 std::vector<m3g::Object3D*> collectObjects(std::span<m3g::Object3D* const> roots);
 
-/// JSON document (2-space indentation, deterministic, no NaN/Infinity: a
-/// non-finite float is written as null):
+/// JSON document, written with nlohmann::json (standard 2-space indented
+/// layout: every member and array element on its own line; deterministic;
+/// members in the order below; floats in the shortest form that reads back as
+/// the same float; no NaN/Infinity: a non-finite float is written as null):
 ///   { "objectCount": N, "roots": [ids], "objects": [ {"id", "class",
 ///     "userID", "userObject", "userParameters", "animationTracks",
 ///     "references", ...the values of the class's getters...}, ... ] }
