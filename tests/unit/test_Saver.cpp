@@ -244,6 +244,9 @@ Decoded decode(const M3GObject& o) {
     return d;
 }
 
+// The parsed file holds spans into `bytes`: a temporary would dangle.
+M3GFile parse(Bytes&&) = delete;
+
 M3GFile parse(const Bytes& bytes) {
     LoadLog log;  // strict
     M3GFile f = parseM3GFile(bytes, log);
@@ -552,7 +555,8 @@ TEST(Saver, CompressedSectionInflatesToTheSameObjects) {
 
 TEST(Saver, ReferencesPointBackwardsAndSharedObjectsAreWrittenOnce) {
     Scene s = makeScene();
-    M3GFile f = parse(saveScene(s));
+    const Bytes fBytes = saveScene(s);
+    M3GFile f = parse(fBytes);
     checkReferences(f);
     std::vector<Object3D*> roots = {s.world.get()};
     EXPECT_EQ(f.objects.size() - 1, reachableCount(roots));
@@ -579,7 +583,8 @@ TEST(Saver, SeveralRootsAndSharedObjectsAcrossRoots) {
     a1->setMaterial(shared.get());
     a2->setMaterial(shared.get());
     Object3D* roots[] = {a1.get(), a2.get(), a1.get(), shared.get()};
-    M3GFile f = parse(Saver::save(roots));
+    const Bytes fBytes = Saver::save(roots);
+    M3GFile f = parse(fBytes);
     ASSERT_EQ(f.objects.size(), 4u);  // header, material, a1, a2
     EXPECT_EQ(f.objects[1].type, m3g::detail::kTypeMaterial);
     EXPECT_EQ(f.objects[2].type, m3g::detail::kTypeAppearance);
@@ -591,7 +596,8 @@ TEST(Saver, SeveralRootsAndSharedObjectsAcrossRoots) {
 
 TEST(Saver, AlignmentReferenceIsWrittenBeforeTheNode) {
     Scene s = makeScene();
-    M3GFile f = parse(saveScene(s));
+    const Bytes fBytes = saveScene(s);
+    M3GFile f = parse(fBytes);
     const M3GObject& light = only(f, m3g::detail::kTypeLight);
     const M3GObject& camera = only(f, m3g::detail::kTypeCamera);
     EXPECT_LT(camera.index, light.index);
@@ -619,7 +625,8 @@ TEST(Saver, DeepHierarchyNeedsNoRecursion) {
         g = child.get();
     }
     Object3D* roots[] = {root.get()};
-    M3GFile f = parse(Saver::save(roots));
+    const Bytes fBytes = Saver::save(roots);
+    M3GFile f = parse(fBytes);
     EXPECT_EQ(f.objects.size(), 3002u);
     checkReferences(f);
 }
@@ -642,7 +649,8 @@ TEST(Saver, NullRootsAndEntries) {
     EXPECT_THROW(Saver::save(some), NullPointerException);
     // An empty (non-null) root list gives a file with an empty objects section.
     Object3D* dummy = nullptr;
-    M3GFile f = parse(Saver::save(std::span<Object3D* const>(&dummy, 0)));
+    const Bytes fBytes = Saver::save(std::span<Object3D* const>(&dummy, 0));
+    M3GFile f = parse(fBytes);
     EXPECT_EQ(f.objects.size(), 1u);
 }
 
@@ -681,7 +689,8 @@ TEST(Saver, SaveToFile) {
 
 TEST(Saver, Object3DBlockUserIdTracksAndParameters) {
     Scene s = makeScene();
-    M3GFile f = parse(saveScene(s));
+    const Bytes fBytes = saveScene(s);
+    M3GFile f = parse(fBytes);
     // The material has one animation track, written before it.
     const M3GObject& material = only(f, m3g::detail::kTypeMaterial);
     const M3GObject& track = only(f, m3g::detail::kTypeAnimationTrack);
@@ -720,7 +729,8 @@ TEST(Saver, OtherUserObjectsAreSkipped) {
     g->setUserObject(std::string("not serialisable"));
     g->setUserID(-2);
     Object3D* roots[] = {g.get()};
-    M3GFile f = parse(Saver::save(roots));
+    const Bytes fBytes = Saver::save(roots);
+    M3GFile f = parse(fBytes);
     ByteReader r = m3g::detail::objectReader(f.objects[1], nullptr);
     EXPECT_EQ(r.readUInt32(), 0xFFFFFFFEu);
     EXPECT_TRUE(r.readObjectIndexArray("tracks").empty());
@@ -729,7 +739,8 @@ TEST(Saver, OtherUserObjectsAreSkipped) {
 
 TEST(Saver, MaterialColors) {
     Scene s = makeScene();
-    M3GFile f = parse(saveScene(s));
+    const Bytes fBytes = saveScene(s);
+    M3GFile f = parse(fBytes);
     Decoded d;
     ByteReader r = readerAfterObject3D(only(f, m3g::detail::kTypeMaterial), d);
     EXPECT_EQ(r.readColorRGB(), 0x112233u);
@@ -743,7 +754,8 @@ TEST(Saver, MaterialColors) {
 
 TEST(Saver, CameraPerspectiveAndComponentTransform) {
     Scene s = makeScene();
-    M3GFile f = parse(saveScene(s));
+    const Bytes fBytes = saveScene(s);
+    M3GFile f = parse(fBytes);
     ByteReader r = m3g::detail::objectReader(only(f, m3g::detail::kTypeCamera), nullptr);
     EXPECT_EQ(r.readUInt32(), 2u);
     r.readObjectIndexArray("tracks");
@@ -771,7 +783,8 @@ TEST(Saver, CameraGenericAndParallel) {
     Ref<Camera> parallel = new Camera();
     parallel->setParallel(5, 2, -1, -1);  // near == far is storable
     Object3D* roots[] = {generic.get(), parallel.get()};
-    M3GFile f = parse(Saver::save(roots));
+    const Bytes fBytes = Saver::save(roots);
+    M3GFile f = parse(fBytes);
     ASSERT_EQ(f.objects.size(), 3u);
     for (int i = 1; i <= 2; ++i) {
         ByteReader r = m3g::detail::objectReader(f.objects[i], nullptr);
@@ -790,7 +803,8 @@ TEST(Saver, CameraGenericAndParallel) {
 
 TEST(Saver, GeneralTransformAndOrientation) {
     Scene s = makeScene();
-    M3GFile f = parse(saveScene(s));
+    const Bytes fBytes = saveScene(s);
+    M3GFile f = parse(fBytes);
     ByteReader r = m3g::detail::objectReader(only(f, m3g::detail::kTypeMesh), nullptr);
     Decoded d;
     readObject3D(r, d);
@@ -810,7 +824,8 @@ TEST(Saver, GeneralTransformAndOrientation) {
 
 TEST(Saver, LightNegativeZeroIsWrittenAsPositiveZero) {
     Scene s = makeScene();
-    M3GFile f = parse(saveScene(s));
+    const Bytes fBytes = saveScene(s);
+    M3GFile f = parse(fBytes);
     ByteReader r = m3g::detail::objectReader(only(f, m3g::detail::kTypeLight), nullptr);
     Decoded d;
     readNode(r, d);
@@ -831,7 +846,8 @@ TEST(Saver, LightNegativeZeroIsWrittenAsPositiveZero) {
 
 TEST(Saver, BackgroundFlagsInSpecOrder) {
     Scene s = makeScene();
-    M3GFile f = parse(saveScene(s));
+    const Bytes fBytes = saveScene(s);
+    M3GFile f = parse(fBytes);
     const M3GObject& bg = only(f, m3g::detail::kTypeBackground);
     Decoded d;
     ByteReader r = readerAfterObject3D(bg, d);
@@ -853,7 +869,8 @@ TEST(Saver, BackgroundFlagsInSpecOrder) {
 
 TEST(Saver, AppearanceLayerAndTextureUnits) {
     Scene s = makeScene();
-    M3GFile f = parse(saveScene(s));
+    const Bytes fBytes = saveScene(s);
+    M3GFile f = parse(fBytes);
     Decoded d;
     ByteReader r = readerAfterObject3D(only(f, m3g::detail::kTypeAppearance), d);
     EXPECT_EQ(r.readByte(), 0xFB);  // -5
@@ -867,7 +884,8 @@ TEST(Saver, AppearanceLayerAndTextureUnits) {
 
 TEST(Saver, CompositingModeFogPolygonModeTexture) {
     Scene s = makeScene();
-    M3GFile f = parse(saveScene(s));
+    const Bytes fBytes = saveScene(s);
+    M3GFile f = parse(fBytes);
     Decoded d;
     ByteReader c = readerAfterObject3D(only(f, m3g::detail::kTypeCompositingMode), d);
     EXPECT_TRUE(c.readBoolean());
@@ -909,7 +927,8 @@ TEST(Saver, CompositingModeFogPolygonModeTexture) {
 
 TEST(Saver, VertexArrayAndVertexBufferValues) {
     Scene s = makeScene();
-    M3GFile f = parse(saveScene(s));
+    const Bytes fBytes = saveScene(s);
+    M3GFile f = parse(fBytes);
     std::vector<const M3GObject*> arrays;
     for (const auto& o : f.objects)
         if (o.type == m3g::detail::kTypeVertexArray) arrays.push_back(&o);
@@ -984,7 +1003,8 @@ TEST(Saver, TriangleStripEncodings) {
     Ref<TriangleStripArray> explicitButConsecutive = new TriangleStripArray(consecutive, len3);
     Object3D* roots[] = {implicitByte.get(), implicitShort.get(), explicitByte.get(), explicitShort.get(),
                          explicitButConsecutive.get()};
-    M3GFile f = parse(Saver::save(roots));
+    const Bytes fBytes = Saver::save(roots);
+    M3GFile f = parse(fBytes);
     ASSERT_EQ(f.objects.size(), 6u);
     checkReferences(f);
     auto reader = [&](int i) {
@@ -1023,7 +1043,8 @@ TEST(Saver, TriangleStripEncodings) {
 
 TEST(Saver, ImagesDirectPalettedAndMutable) {
     Scene s = makeScene();
-    M3GFile f = parse(saveScene(s));
+    const Bytes fBytes = saveScene(s);
+    M3GFile f = parse(fBytes);
     int seen = 0;
     for (const auto& o : f.objects) {
         if (o.type != m3g::detail::kTypeImage2D) continue;
@@ -1059,7 +1080,8 @@ TEST(Saver, ImagesDirectPalettedAndMutable) {
 
 TEST(Saver, KeyframeSequenceTrackAndController) {
     Scene s = makeScene();
-    M3GFile f = parse(saveScene(s));
+    const Bytes fBytes = saveScene(s);
+    M3GFile f = parse(fBytes);
     const M3GObject& seq = only(f, m3g::detail::kTypeKeyframeSequence);
     const M3GObject& ctl = only(f, m3g::detail::kTypeAnimationController);
     Decoded d;
@@ -1094,7 +1116,8 @@ TEST(Saver, KeyframeSequenceTrackAndController) {
 
 TEST(Saver, MeshMorphingMeshSkinnedMeshSprite) {
     Scene s = makeScene();
-    M3GFile f = parse(saveScene(s));
+    const Bytes fBytes = saveScene(s);
+    M3GFile f = parse(fBytes);
     const std::uint32_t app = only(f, m3g::detail::kTypeAppearance).index;
     {
         ByteReader r = m3g::detail::objectReader(only(f, m3g::detail::kTypeMorphingMesh), nullptr);
