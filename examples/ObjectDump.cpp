@@ -152,13 +152,6 @@ std::uint32_t checksum(std::span<const std::uint8_t> bytes) {
     return h;
 }
 
-const UserParameters* userParameters(const Object3D* o) {
-    const std::any& u = o->getUserObject();
-    if (const auto* p = std::any_cast<std::shared_ptr<const UserParameters>>(&u)) return p->get();
-    if (const auto* q = std::any_cast<std::shared_ptr<UserParameters>>(&u)) return q->get();
-    return nullptr;
-}
-
 std::string hexBytes(std::span<const std::uint8_t> bytes) {
     static constexpr char digits[] = "0123456789abcdef";
     std::string s;
@@ -184,7 +177,7 @@ struct Dumper {
         j["id"] = idOf(ids, o);
         j["class"] = o->getClassName();
         j["userID"] = o->getUserID();
-        const UserParameters* params = userParameters(o);
+        const UserParameters* params = o->getUserParameters();
         const std::any& u = o->getUserObject();
         j["userObject"] = params ? Json("UserParameters") : u.has_value() ? Json("other") : Json();
         if (params) {

@@ -1,7 +1,7 @@
 #include <m3g/Object3D.h>
 
 #include <atomic>
-#include <unordered_set>
+#include <memory>
 
 #include "Check.h"
 
@@ -36,11 +36,15 @@ void Object3D::updateProperty(int property, std::span<const float>) {
         detail::str(getClassName(), "::updateProperty: property ", property, " is not animatable in this class"));
 }
 
+void Object3D::directReferences(std::vector<Object3D*>& out) const {
+    for (const auto& t : tracks_) out.push_back(t.get());
+    collectReferences(out);
+}
+
 int Object3D::getReferences(std::span<Ref<Object3D>> references) const {
     std::vector<Object3D*> refs;
     refs.reserve(tracks_.size() + 4);
-    for (const auto& t : tracks_) refs.push_back(t.get());
-    collectReferences(refs);
+    directReferences(refs);
     if (references.data() != nullptr) {
         if (references.size() < refs.size())
             throw IllegalArgumentException(detail::str("Object3D::getReferences: array length ", references.size(),
@@ -51,22 +55,19 @@ int Object3D::getReferences(std::span<Ref<Object3D>> references) const {
 }
 
 Ref<Object3D> Object3D::find(int userID) const {
-    // Iterative depth-first search in reference order; the visited set guards
-    // against shared objects and reference cycles.
-    std::unordered_set<const Object3D*> visited;
-    std::vector<const Object3D*> stack{this};
-    std::vector<Object3D*> refs;
-    while (!stack.empty()) {
-        const Object3D* o = stack.back();
-        stack.pop_back();
-        if (!visited.insert(o).second) continue;
-        if (o->userID_ == userID) return Ref<Object3D>(const_cast<Object3D*>(o));
-        refs.clear();
-        for (const auto& t : o->tracks_) refs.push_back(t.get());
-        o->collectReferences(refs);
-        for (auto it = refs.rbegin(); it != refs.rend(); ++it)
-            if (!visited.count(*it)) stack.push_back(*it);
-    }
+    Ref<Object3D> found;
+    forEachReachable([&](Object3D& o) {
+        if (o.userID_ != userID) return true;
+        found = &o;
+        return false;
+    });
+    return found;
+}
+
+const UserParameters* Object3D::getUserParameters() const noexcept {
+    if (auto* p = std::any_cast<std::shared_ptr<const UserParameters>>(&userObject_)) return p->get();
+    if (auto* p = std::any_cast<std::shared_ptr<UserParameters>>(&userObject_)) return p->get();
+    if (auto* p = std::any_cast<UserParameters>(&userObject_)) return p;
     return nullptr;
 }
 

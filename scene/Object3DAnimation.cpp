@@ -20,7 +20,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_set>
 
 #include <m3g/AnimationController.h>
 #include <m3g/AnimationTrack.h>
@@ -129,23 +128,11 @@ void Object3D::removeAnimationTrack(AnimationTrack* animationTrack) {
 }
 
 int Object3D::animate(int worldTime) {
-    // Every object reachable through getReferences (this one first), each
-    // once: shared components and reference cycles are visited a single time.
     double validity = kForever;
-    std::unordered_set<const Object3D*> visited;
-    std::vector<Object3D*> stack{this};
-    std::vector<Object3D*> refs;
-    while (!stack.empty()) {
-        Object3D* o = stack.back();
-        stack.pop_back();
-        if (!visited.insert(o).second) continue;
-        if (!o->tracks_.empty()) applyTracks(*o, o->tracks_, worldTime, validity);
-        refs.clear();
-        for (const auto& t : o->tracks_) refs.push_back(t.get());
-        o->collectReferences(refs);
-        for (auto it = refs.rbegin(); it != refs.rend(); ++it)
-            if (!visited.count(*it)) stack.push_back(*it);
-    }
+    forEachReachable([&](Object3D& o) {
+        if (!o.tracks_.empty()) applyTracks(o, o.tracks_, worldTime, validity);
+        return true;
+    });
     return static_cast<int>(std::clamp(validity, 0.0, kForever));
 }
 

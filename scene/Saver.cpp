@@ -47,15 +47,6 @@ using detail::str;
 
 constexpr std::uint32_t kFirstObjectIndex = 2;  // 0 = null, 1 = the header
 
-/// The user parameters held by `o`'s user object, or null.
-const UserParameters* userParametersOf(const Object3D& o) {
-    const std::any& u = o.getUserObject();
-    if (auto* p = std::any_cast<std::shared_ptr<const UserParameters>>(&u)) return p->get();
-    if (auto* p = std::any_cast<std::shared_ptr<UserParameters>>(&u)) return p->get();
-    if (auto* p = std::any_cast<UserParameters>(&u)) return p;
-    return nullptr;
-}
-
 std::uint8_t unitByte(float v) {
     const float c = std::clamp(v, 0.0f, 1.0f);
     return static_cast<std::uint8_t>(std::lround(c * 255.0f));
@@ -162,7 +153,7 @@ void ObjectSerializer::object3D(const Object3D& o) {
     const int tracks = o.getAnimationTrackCount();
     w.writeUInt32(static_cast<std::uint32_t>(tracks));
     for (int i = 0; i < tracks; ++i) ref(o.getAnimationTrack(i).get());
-    const UserParameters* params = userParametersOf(o);
+    const UserParameters* params = o.getUserParameters();
     if (!params) {
         w.writeUInt32(0);
         return;

@@ -6,6 +6,7 @@
 #include <map>
 #include <span>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include <m3g/Exception.h>
@@ -67,6 +68,11 @@ public:
     std::uint64_t getObjectId() const noexcept { return objectId_; }
     /// Incremented by every change that a renderer mirror or a cache must see.
     std::uint32_t getRevision() const noexcept { return revision_; }
+    /// The user parameters a file gave this object: the user object when it
+    /// holds a `std::shared_ptr<const UserParameters>` (what the Loader sets),
+    /// a `std::shared_ptr<UserParameters>` or a `UserParameters` value; else null.
+    const UserParameters* getUserParameters() const noexcept;
+
     /// The class name, as in Java ("Mesh").
     virtual const char* getClassName() const noexcept = 0;
 
@@ -102,6 +108,15 @@ protected:
     /// The attached tracks, as stored (each is an AnimationTrack).
     const std::vector<Ref<Object3D>>& animationTracks() const noexcept { return tracks_; }
 
+    /// Direct references in getReferences order: animation tracks, then
+    /// collectReferences.
+    void directReferences(std::vector<Object3D*>& out) const;
+    /// Visits this object and every object reachable through getReferences,
+    /// each once, depth first in reference order, until `visit` returns false.
+    /// Shared objects and reference cycles are visited a single time.
+    template <class Visit>
+    void forEachReachable(Visit&& visit) const;
+
     /// Marks the object changed (bumps the revision).
     void touch() noexcept { ++revision_; }
 
@@ -116,6 +131,23 @@ private:
     // Held as Object3D so this header needs no AnimationTrack definition.
     std::vector<Ref<Object3D>> tracks_;  // sorted by target property
 };
+
+template <class Visit>
+void Object3D::forEachReachable(Visit&& visit) const {
+    std::unordered_set<const Object3D*> seen;
+    std::vector<Object3D*> stack{const_cast<Object3D*>(this)};
+    std::vector<Object3D*> refs;
+    while (!stack.empty()) {
+        Object3D* o = stack.back();
+        stack.pop_back();
+        if (!seen.insert(o).second) continue;
+        if (!visit(*o)) return;
+        refs.clear();
+        o->directReferences(refs);
+        for (auto it = refs.rbegin(); it != refs.rend(); ++it)
+            if (!seen.count(*it)) stack.push_back(*it);
+    }
+}
 
 /// Java-style checked downcast of a Ref: null if `p` is not a T.
 template <class T, class U>

@@ -123,14 +123,6 @@ private:
         return true;
     }
 
-    static const m3g::UserParameters* params(const Object3D& o) {
-        const std::any& u = o.getUserObject();
-        if (auto* p = std::any_cast<std::shared_ptr<const m3g::UserParameters>>(&u)) return p->get();
-        if (auto* p = std::any_cast<std::shared_ptr<m3g::UserParameters>>(&u)) return p->get();
-        if (auto* p = std::any_cast<m3g::UserParameters>(&u)) return p;
-        return nullptr;
-    }
-
     bool compareObject(const std::string& path, const Object3D& a, const Object3D& b);
     bool compareObject3D(const std::string& path, const Object3D& a, const Object3D& b);
     bool compareTransformable(const std::string& path, const m3g::Transformable& a, const m3g::Transformable& b);
@@ -166,8 +158,8 @@ inline bool GraphComparer::compareObject3D(const std::string& path, const Object
                   b.getAnimationTrack(i).get()))
             return false;
     static const m3g::UserParameters kNone;
-    const auto* pa = params(a);
-    const auto* pb = params(b);
+    const auto* pa = a.getUserParameters();
+    const auto* pb = b.getUserParameters();
     if (*(pa ? pa : &kNone) != *(pb ? pb : &kNone)) return fail(path, "user parameters differ");
     return true;
 }

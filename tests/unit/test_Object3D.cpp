@@ -20,6 +20,20 @@ TEST(Object3D, UserIdAndUserObject) {
     EXPECT_EQ(back->at(7), (std::vector<std::uint8_t>{1, 2, 3}));
 }
 
+TEST(Object3D, GetUserParametersReadsEveryParameterHolder) {
+    Ref<Group> g = make<Group>();
+    EXPECT_EQ(g->getUserParameters(), nullptr);
+    g->setUserObject(std::make_shared<const UserParameters>(UserParameters{{1, {9}}}));
+    ASSERT_NE(g->getUserParameters(), nullptr);
+    EXPECT_EQ(g->getUserParameters()->at(1), std::vector<std::uint8_t>{9});
+    g->setUserObject(std::make_shared<UserParameters>(UserParameters{{2, {8}}}));
+    EXPECT_EQ(g->getUserParameters()->at(2), std::vector<std::uint8_t>{8});
+    g->setUserObject(UserParameters{{3, {7}}});
+    EXPECT_EQ(g->getUserParameters()->at(3), std::vector<std::uint8_t>{7});
+    g->setUserObject(std::string("not parameters"));
+    EXPECT_EQ(g->getUserParameters(), nullptr);
+}
+
 TEST(Object3D, ObjectIdsAreUniqueAndRevisionsGrow) {
     Ref<Group> a = make<Group>(), b = make<Group>();
     EXPECT_NE(a->getObjectId(), b->getObjectId());
