@@ -6,12 +6,9 @@
 #include <m3g/AnimationTrack.h>
 
 #include "Check.h"
+#include "PropertyUtil.h"
 
 namespace m3g {
-
-namespace {
-int channel(float v) { return int(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
-}  // namespace
 
 Light::Light() = default;
 
@@ -69,7 +66,7 @@ bool Light::isAnimatable(int property) const noexcept {
 void Light::updateProperty(int property, std::span<const float> v) {
     switch (property) {
     case AnimationTrack::COLOR:
-        color_ = (channel(v[0]) << 16) | (channel(v[1]) << 8) | channel(v[2]);
+        color_ = detail::packRGB(v[0], v[1], v[2]);
         touch();
         return;
     case AnimationTrack::INTENSITY:

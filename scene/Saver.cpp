@@ -38,6 +38,7 @@
 #include "ByteWriter.h"
 #include "Check.h"
 #include "M3GSections.h"
+#include "PropertyUtil.h"
 
 namespace m3g {
 namespace {
@@ -47,10 +48,6 @@ using detail::str;
 
 constexpr std::uint32_t kFirstObjectIndex = 2;  // 0 = null, 1 = the header
 
-std::uint8_t unitByte(float v) {
-    const float c = std::clamp(v, 0.0f, 1.0f);
-    return static_cast<std::uint8_t>(std::lround(c * 255.0f));
-}
 
 std::uint32_t checkedSize(std::size_t n, const char* what) {
     if (n > std::numeric_limits<std::uint32_t>::max())
@@ -200,7 +197,7 @@ void ObjectSerializer::node(const Node& o) {
     transformable(o);
     w.writeBoolean(o.isRenderingEnabled());
     w.writeBoolean(o.isPickingEnabled());
-    w.writeByte(unitByte(o.getAlphaFactor()));
+    w.writeByte(static_cast<std::uint8_t>(detail::channelToByte(o.getAlphaFactor())));
     w.writeUInt32(static_cast<std::uint32_t>(o.getScope()));
     const int zTarget = o.getAlignmentTarget(Node::Z_AXIS);
     const int yTarget = o.getAlignmentTarget(Node::Y_AXIS);
@@ -311,7 +308,7 @@ void ObjectSerializer::compositingMode(const CompositingMode& o) {
     w.writeBoolean(o.isColorWriteEnabled());
     w.writeBoolean(o.isAlphaWriteEnabled());
     w.writeByte(static_cast<std::uint8_t>(o.getBlending()));
-    w.writeByte(unitByte(o.getAlphaThreshold()));
+    w.writeByte(static_cast<std::uint8_t>(detail::channelToByte(o.getAlphaThreshold())));
     f32(o.getDepthOffsetFactor(), "CompositingMode depth offset factor");
     f32(o.getDepthOffsetUnits(), "CompositingMode depth offset units");
 }

@@ -5,6 +5,7 @@
 #include <m3g/AnimationTrack.h>
 
 #include "Check.h"
+#include "PropertyUtil.h"
 
 namespace m3g {
 
@@ -150,24 +151,16 @@ bool VertexBuffer::isAnimatable(int property) const noexcept {
     return property == AnimationTrack::COLOR || property == AnimationTrack::ALPHA || Object3D::isAnimatable(property);
 }
 
-namespace {
-// Clamps to [0, 1] (NaN -> 0) and scales to 0..255 with rounding.
-std::uint32_t toByte(float v) noexcept {
-    if (!(v > 0.0f)) return 0;
-    if (v >= 1.0f) return 255;
-    return static_cast<std::uint32_t>(std::lround(v * 255.0f));
-}
-}  // namespace
 
 void VertexBuffer::updateProperty(int property, std::span<const float> value) {
     switch (property) {
     case AnimationTrack::ALPHA:
-        defaultColor_ = (defaultColor_ & 0x00FFFFFFu) | (toByte(value[0]) << 24);
+        defaultColor_ = (defaultColor_ & 0x00FFFFFFu) | static_cast<std::uint32_t>(detail::packAlpha(value[0]));
         touch();
         return;
     case AnimationTrack::COLOR:
-        defaultColor_ = (defaultColor_ & 0xFF000000u) | (toByte(value[0]) << 16) | (toByte(value[1]) << 8) |
-                        toByte(value[2]);
+        defaultColor_ = (defaultColor_ & 0xFF000000u) |
+                        static_cast<std::uint32_t>(detail::packRGB(value[0], value[1], value[2]));
         touch();
         return;
     default:

@@ -1,6 +1,8 @@
 // Light (spec digest §4.7): defaults, checks, animation clamping.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <m3g/AnimationTrack.h>
 #include <m3g/Light.h>
 
@@ -138,4 +140,12 @@ TEST(Light, DuplicateCopiesEverything) {
     EXPECT_EQ(d->getConstantAttenuation(), 0.0f);
     EXPECT_EQ(d->getLinearAttenuation(), 1.0f);
     EXPECT_EQ(d->getQuadraticAttenuation(), 2.0f);
+}
+
+TEST(Light, AnimatedNaNColorChannelBecomesZero) {
+    // The shared color conversion maps NaN to 0 (lround(NaN) was undefined).
+    Ref<Light> l = make<Light>();
+    const float v[] = {std::numeric_limits<float>::quiet_NaN(), 1.0f, 0.5f};
+    l->updateProperty(AnimationTrack::COLOR, v);
+    EXPECT_EQ(l->getColor(), 0x00FF80);  // 0.5 * 255 = 127.5 rounds up to 128
 }
