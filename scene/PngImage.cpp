@@ -7,20 +7,11 @@
 #include <png.h>
 
 #include <m3g/Exception.h>
+#include <m3g/Image2D.h>
 
 #include "Check.h"
 
 namespace m3g::detail {
-
-int pngFormatBytesPerPixel(int format) {
-    switch (format) {
-        case kImageLuminance: return 1;
-        case kImageLuminanceAlpha: return 2;
-        case kImageRGB: return 3;
-        case kImageRGBA: return 4;
-        default: return 0;
-    }
-}
 
 namespace {
 
@@ -89,11 +80,11 @@ bool readHeader(png_structp png, png_infop info, PngInfo* out) {
 
     int format = 0;
     switch (colorType) {
-        case PNG_COLOR_TYPE_GRAY: format = hasTrns ? kImageLuminanceAlpha : kImageLuminance; break;
-        case PNG_COLOR_TYPE_GRAY_ALPHA: format = kImageLuminanceAlpha; break;
-        case PNG_COLOR_TYPE_RGB: format = hasTrns ? kImageRGBA : kImageRGB; break;
-        case PNG_COLOR_TYPE_PALETTE: format = hasTrns ? kImageRGBA : kImageRGB; break;
-        case PNG_COLOR_TYPE_RGB_ALPHA: format = kImageRGBA; break;
+        case PNG_COLOR_TYPE_GRAY: format = hasTrns ? Image2D::LUMINANCE_ALPHA : Image2D::LUMINANCE; break;
+        case PNG_COLOR_TYPE_GRAY_ALPHA: format = Image2D::LUMINANCE_ALPHA; break;
+        case PNG_COLOR_TYPE_RGB: format = hasTrns ? Image2D::RGBA : Image2D::RGB; break;
+        case PNG_COLOR_TYPE_PALETTE: format = hasTrns ? Image2D::RGBA : Image2D::RGB; break;
+        case PNG_COLOR_TYPE_RGB_ALPHA: format = Image2D::RGBA; break;
         default: png_error(png, "unknown PNG colour type");
     }
     if (colorType == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
@@ -141,7 +132,7 @@ PngImage decodePng(std::span<const std::uint8_t> data, const std::string& contex
 
     PngInfo pi{};
     if (!readHeader(h.png, h.info, &pi)) fail(str("invalid PNG: ", st.message));
-    const int bpp = pngFormatBytesPerPixel(pi.format);
+    const int bpp = Image2D::bytesPerPixel(pi.format);
     if (pi.width == 0 || pi.height == 0) fail("invalid PNG: zero width or height");
     if (pi.channels != bpp || pi.rowBytes != std::size_t(pi.width) * std::size_t(bpp))
         fail(str("unexpected PNG layout after conversion (", pi.channels, " channels, ", pi.rowBytes,

@@ -16,22 +16,13 @@
 
 namespace m3g::detail {
 
-/// Image2D format constants (spec digest §3; equal to Image2D::LUMINANCE etc.).
-inline constexpr int kImageLuminance = 97;
-inline constexpr int kImageLuminanceAlpha = 98;
-inline constexpr int kImageRGB = 99;
-inline constexpr int kImageRGBA = 100;
-
 struct PngImage {
-    int format = 0;  ///< kImageLuminance .. kImageRGBA
+    int format = 0;  ///< Image2D::LUMINANCE, LUMINANCE_ALPHA, RGB or RGBA
     int width = 0;
     int height = 0;
-    /// Rows top to bottom, tightly packed, bytesPerPixel(format) bytes per pixel.
+    /// Rows top to bottom, tightly packed, Image2D::bytesPerPixel(format) bytes per pixel.
     std::vector<std::uint8_t> pixels;
 };
-
-/// Bytes per pixel of the four formats above (1, 2, 3, 4).
-int pngFormatBytesPerPixel(int format);
 
 /// Largest width or height accepted, and largest decoded size in bytes.
 inline constexpr std::uint32_t kPngMaxDimension = 16384;

@@ -2,6 +2,8 @@
 // colour-type mapping; robustness against damaged PNGs.
 #include <gtest/gtest.h>
 
+#include <m3g/Image2D.h>
+
 #include <csetjmp>
 #include <filesystem>
 #include <random>
@@ -14,6 +16,7 @@
 #include "PngImage.h"
 
 using m3g::IOException;
+using m3g::Image2D;
 using m3g::detail::decodePng;
 using m3g::detail::PngImage;
 using namespace m3g::detail;
@@ -80,7 +83,7 @@ TEST(PngImage, Grey8IsLuminance) {
     PngSpec s;
     s.rows = {0, 100, 255, 1, 2, 3};
     const PngImage img = decodePng(writePng(s));
-    EXPECT_EQ(img.format, kImageLuminance);
+    EXPECT_EQ(img.format, Image2D::LUMINANCE);
     EXPECT_EQ(img.width, 3);
     EXPECT_EQ(img.height, 2);
     EXPECT_EQ(img.pixels, s.rows);
@@ -93,7 +96,7 @@ TEST(PngImage, LowBitGreyIsExpanded) {
     s.bitDepth = 2;
     s.rows = {0b00011011};  // 0,1,2,3
     PngImage img = decodePng(writePng(s));
-    EXPECT_EQ(img.format, kImageLuminance);
+    EXPECT_EQ(img.format, Image2D::LUMINANCE);
     EXPECT_EQ(img.pixels, (Bytes{0, 85, 170, 255}));
     s.bitDepth = 1;
     s.width = 8;
@@ -118,7 +121,7 @@ TEST(PngImage, SixteenBitKeepsHighByte) {
     s.width = 1;
     s.rows = {0x10, 0xFF, 0x20, 0x00, 0x30, 0x80, 0x40, 0x01};
     const PngImage img = decodePng(writePng(s));
-    EXPECT_EQ(img.format, kImageRGBA);
+    EXPECT_EQ(img.format, Image2D::RGBA);
     EXPECT_EQ(img.pixels, (Bytes{0x10, 0x20, 0x30, 0x40}));
 }
 
@@ -128,7 +131,7 @@ TEST(PngImage, GreyWithTrnsIsLuminanceAlpha) {
     s.trnsColor = true;
     s.trns.gray = 100;
     const PngImage img = decodePng(writePng(s));
-    EXPECT_EQ(img.format, kImageLuminanceAlpha);
+    EXPECT_EQ(img.format, Image2D::LUMINANCE_ALPHA);
     EXPECT_EQ(img.pixels, (Bytes{0, 255, 100, 0, 255, 255, 100, 0, 2, 255, 3, 255}));
 }
 
@@ -139,7 +142,7 @@ TEST(PngImage, GreyAlphaIsLuminanceAlpha) {
     s.height = 1;
     s.rows = {10, 20, 30, 40};
     const PngImage img = decodePng(writePng(s));
-    EXPECT_EQ(img.format, kImageLuminanceAlpha);
+    EXPECT_EQ(img.format, Image2D::LUMINANCE_ALPHA);
     EXPECT_EQ(img.pixels, s.rows);
 }
 
@@ -150,14 +153,14 @@ TEST(PngImage, RgbAndRgbWithTrns) {
     s.height = 1;
     s.rows = {1, 2, 3, 4, 5, 6};
     PngImage img = decodePng(writePng(s));
-    EXPECT_EQ(img.format, kImageRGB);
+    EXPECT_EQ(img.format, Image2D::RGB);
     EXPECT_EQ(img.pixels, s.rows);
     s.trnsColor = true;
     s.trns.red = 4;
     s.trns.green = 5;
     s.trns.blue = 6;
     img = decodePng(writePng(s));
-    EXPECT_EQ(img.format, kImageRGBA);
+    EXPECT_EQ(img.format, Image2D::RGBA);
     EXPECT_EQ(img.pixels, (Bytes{1, 2, 3, 255, 4, 5, 6, 0}));
 }
 
@@ -168,7 +171,7 @@ TEST(PngImage, RgbaIsRgba) {
     s.height = 2;
     s.rows = {1, 2, 3, 4, 5, 6, 7, 8};
     const PngImage img = decodePng(writePng(s));
-    EXPECT_EQ(img.format, kImageRGBA);
+    EXPECT_EQ(img.format, Image2D::RGBA);
     EXPECT_EQ(img.pixels, s.rows);
 }
 
@@ -180,11 +183,11 @@ TEST(PngImage, PaletteIsRgbOrRgbaWithTrns) {
     s.palette = {{10, 20, 30}, {40, 50, 60}, {70, 80, 90}};
     s.rows = {2, 0, 1};
     PngImage img = decodePng(writePng(s));
-    EXPECT_EQ(img.format, kImageRGB);
+    EXPECT_EQ(img.format, Image2D::RGB);
     EXPECT_EQ(img.pixels, (Bytes{70, 80, 90, 10, 20, 30, 40, 50, 60}));
     s.trnsAlpha = {0, 128};  // entry 2 has no tRNS entry: opaque
     img = decodePng(writePng(s));
-    EXPECT_EQ(img.format, kImageRGBA);
+    EXPECT_EQ(img.format, Image2D::RGBA);
     EXPECT_EQ(img.pixels, (Bytes{70, 80, 90, 255, 10, 20, 30, 0, 40, 50, 60, 128}));
     // 4-bit and 1-bit palettes.
     s.trnsAlpha.clear();
@@ -210,7 +213,7 @@ TEST(PngImage, InterlacedAndGammaDoNotChangeValues) {
     s.gamma = 1.0 / 2.2;
     for (int i = 0; i < s.width * s.height * 3; ++i) s.rows.push_back(static_cast<std::uint8_t>(i * 7));
     const PngImage img = decodePng(writePng(s));
-    EXPECT_EQ(img.format, kImageRGB);
+    EXPECT_EQ(img.format, Image2D::RGB);
     EXPECT_EQ(img.pixels, s.rows);
 }
 
@@ -296,7 +299,7 @@ TEST(PngImage, CorruptedBytesNeverCrash) {
         try {
             const PngImage img = decodePng(x);
             EXPECT_EQ(img.pixels.size(),
-                      std::size_t(img.width) * std::size_t(img.height) * std::size_t(pngFormatBytesPerPixel(img.format)));
+                      std::size_t(img.width) * std::size_t(img.height) * std::size_t(Image2D::bytesPerPixel(img.format)));
         } catch (const IOException&) {
         }
     }
@@ -325,10 +328,10 @@ TEST(PngImage, CorpusTextures) {
         const PngImage img = decodePng(b, e.path().string());
         EXPECT_EQ(img.width, w);
         EXPECT_EQ(img.height, h);
-        const int expected = colorType == 0 ? kImageLuminance
-                             : colorType == 4 ? kImageLuminanceAlpha
-                             : colorType == 6 ? kImageRGBA
-                                              : kImageRGB;  // 2 or 3, unless tRNS
+        const int expected = colorType == 0 ? Image2D::LUMINANCE
+                             : colorType == 4 ? Image2D::LUMINANCE_ALPHA
+                             : colorType == 6 ? Image2D::RGBA
+                                              : Image2D::RGB;  // 2 or 3, unless tRNS
         if (colorType == 2 || colorType == 3 || colorType == 0)
             EXPECT_TRUE(img.format == expected || img.format == expected + 1) << e.path();
         else
