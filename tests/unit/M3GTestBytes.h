@@ -3,6 +3,8 @@
 // locate the shared corpus. Test-only.
 #pragma once
 
+#include <algorithm>
+
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -128,6 +130,15 @@ inline std::optional<std::filesystem::path> corpusDir() {
     if (std::filesystem::is_directory(p / "models", ec)) return p;
 #endif
     return std::nullopt;
+}
+
+/// Every regular file under `corpus`/models, sorted (stable test output).
+inline std::vector<std::filesystem::path> corpusFiles(const std::filesystem::path& corpus) {
+    std::vector<std::filesystem::path> files;
+    for (const auto& e : std::filesystem::recursive_directory_iterator(corpus / "models"))
+        if (e.is_regular_file()) files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    return files;
 }
 
 }  // namespace m3gtest

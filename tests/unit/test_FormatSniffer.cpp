@@ -94,15 +94,14 @@ TEST(FormatSniffer, CorpusFilesAreM3GOrPng) {
     const auto dir = corpusDir();
     if (!dir) GTEST_SKIP() << "corpus not found (expected ../shared/corpus next to the source tree)";
     int m3g = 0, png = 0;
-    for (const auto& e : std::filesystem::recursive_directory_iterator(*dir / "models")) {
-        if (!e.is_regular_file()) continue;
-        const InputFormat f = sniffFormat(readFile(e.path()));
-        const auto ext = e.path().extension();
+    for (const auto& path : m3gtest::corpusFiles(*dir)) {
+        const InputFormat f = sniffFormat(readFile(path));
+        const auto ext = path.extension();
         if (ext == ".png") {
-            EXPECT_EQ(f, InputFormat::PNG) << e.path();
+            EXPECT_EQ(f, InputFormat::PNG) << path;
             ++png;
         } else {
-            EXPECT_EQ(f, InputFormat::M3G) << e.path();
+            EXPECT_EQ(f, InputFormat::M3G) << path;
             ++m3g;
         }
     }

@@ -24,14 +24,6 @@ using namespace m3g;
 
 namespace {
 
-std::vector<fs::path> corpusFiles(const fs::path& models) {
-    std::vector<fs::path> files;
-    for (const auto& e : fs::recursive_directory_iterator(models))
-        if (e.is_regular_file()) files.push_back(e.path());
-    std::sort(files.begin(), files.end());
-    return files;
-}
-
 std::string topFolder(const fs::path& models, const fs::path& file) {
     return fs::relative(file, models).begin()->string();
 }
@@ -56,7 +48,7 @@ TEST(LoaderCorpus, EveryM3GFileLoadsOrFailsAsDocumented) {
     };
     std::map<std::string, Counts> perFolder;
     int checked = 0;
-    for (const auto& path : corpusFiles(models)) {
+    for (const auto& path : m3gtest::corpusFiles(*corpus)) {
         const auto bytes = m3gtest::readFile(path);
         const auto format = detail::sniffFormat(bytes);
         const std::string rel = fs::relative(path, models).string();

@@ -557,11 +557,10 @@ TEST(M3GSectionsCorpus, EveryM3GFileParsesAtSectionLevel) {
     int m3gExtension = 0, m3gSniffed = 0, parsed = 0, rejectedAsExpected = 0, sections = 0, objects = 0,
         zlibSections = 0;
     std::vector<std::string> failures;
-    for (const auto& e : std::filesystem::recursive_directory_iterator(*dir / "models")) {
-        if (!e.is_regular_file()) continue;
-        const std::string rel = std::filesystem::relative(e.path(), *dir / "models").generic_string();
-        if (e.path().extension() == ".m3g") ++m3gExtension;
-        const Bytes b = readFile(e.path());
+    for (const auto& path : m3gtest::corpusFiles(*dir)) {
+        const std::string rel = std::filesystem::relative(path, *dir / "models").generic_string();
+        if (path.extension() == ".m3g") ++m3gExtension;
+        const Bytes b = readFile(path);
         if (m3g::detail::sniffFormat(b) != m3g::detail::InputFormat::M3G) continue;
         ++m3gSniffed;
         LoadLog log;

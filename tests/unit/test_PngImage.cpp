@@ -318,14 +318,14 @@ TEST(PngImage, CorpusTextures) {
     const auto dir = m3gtest::corpusDir();
     if (!dir) GTEST_SKIP() << "corpus not found (expected ../shared/corpus next to the source tree)";
     int n = 0;
-    for (const auto& e : std::filesystem::recursive_directory_iterator(*dir / "models")) {
-        if (!e.is_regular_file() || e.path().extension() != ".png") continue;
-        const Bytes b = m3gtest::readFile(e.path());
+    for (const auto& path : m3gtest::corpusFiles(*dir)) {
+        if (path.extension() != ".png") continue;
+        const Bytes b = m3gtest::readFile(path);
         ASSERT_GE(b.size(), 33u);
         const int w = (b[16] << 24) | (b[17] << 16) | (b[18] << 8) | b[19];
         const int h = (b[20] << 24) | (b[21] << 16) | (b[22] << 8) | b[23];
         const int colorType = b[25];
-        const PngImage img = decodePng(b, e.path().string());
+        const PngImage img = decodePng(b, path.string());
         EXPECT_EQ(img.width, w);
         EXPECT_EQ(img.height, h);
         const int expected = colorType == 0 ? Image2D::LUMINANCE
@@ -333,9 +333,9 @@ TEST(PngImage, CorpusTextures) {
                              : colorType == 6 ? Image2D::RGBA
                                               : Image2D::RGB;  // 2 or 3, unless tRNS
         if (colorType == 2 || colorType == 3 || colorType == 0)
-            EXPECT_TRUE(img.format == expected || img.format == expected + 1) << e.path();
+            EXPECT_TRUE(img.format == expected || img.format == expected + 1) << path;
         else
-            EXPECT_EQ(img.format, expected) << e.path();
+            EXPECT_EQ(img.format, expected) << path;
         ++n;
     }
     EXPECT_GT(n, 0);

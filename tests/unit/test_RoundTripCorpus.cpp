@@ -34,11 +34,7 @@ std::vector<Object3D*> rawRoots(const std::vector<Ref<Object3D>>& roots) {
 TEST(RoundTripCorpus, LoadSaveLoadIsEquivalentForEveryFile) {
     const auto corpus = m3gtest::corpusDir();
     if (!corpus) GTEST_SKIP() << "shared corpus not found (M3G_CORPUS_DIR/models); round-trip test skipped";
-    const fs::path models = *corpus / "models";
-    std::vector<fs::path> files;
-    for (const auto& e : fs::recursive_directory_iterator(models))
-        if (e.is_regular_file()) files.push_back(e.path());
-    std::sort(files.begin(), files.end());
+    const std::vector<fs::path> files = m3gtest::corpusFiles(*corpus);
 
     m3gtest::GraphCompareOptions options;
     options.compareMutablePixels = false;  // the format stores no pixels for mutable images
