@@ -5,7 +5,6 @@
 // graph comparison allows 1e-5 relative).
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <map>
