@@ -3,6 +3,8 @@
 #include <m3g/Version.h>
 
 #include "Check.h"
+#include "RenderBackend.h"
+#include "RenderQueue.h"
 
 namespace m3g {
 
@@ -10,7 +12,12 @@ namespace {
 constexpr int kAllHints = Graphics3D::ANTIALIAS | Graphics3D::DITHER | Graphics3D::TRUE_COLOR | Graphics3D::OVERWRITE;
 }
 
-Graphics3D::Graphics3D() = default;
+Graphics3D::Graphics3D() : queue_(std::make_unique<detail::RenderQueue>()) {}
+Graphics3D::~Graphics3D() = default;
+
+void Graphics3D::requireTarget(const char* where) const {
+    if (!target_) throw IllegalStateException(detail::str(where, ": no target is bound (call bindTarget first)"));
+}
 
 Graphics3D* Graphics3D::getInstance() {
     static Graphics3D instance;
@@ -85,12 +92,20 @@ void Graphics3D::bindTarget(Image2D* target, bool depthBuffer, int hints) {
 }
 
 void Graphics3D::releaseTarget() {
-    target_ = nullptr;
-    targetImage_ = nullptr;
-    targetGraphics_ = nullptr;
-    targetWidth_ = targetHeight_ = 0;
-    depthBuffer_ = false;
-    hints_ = 0;
+    if (!target_) return;
+    // Unbind even if the flush throws (a lost device must not leave the target bound).
+    struct Unbind {
+        Graphics3D& g;
+        ~Unbind() {
+            g.target_ = nullptr;
+            g.targetImage_ = nullptr;
+            g.targetGraphics_ = nullptr;
+            g.targetWidth_ = g.targetHeight_ = 0;
+            g.depthBuffer_ = false;
+            g.hints_ = 0;
+        }
+    } unbind{*this};
+    if (backend_) backend_->release(*this);
 }
 
 void Graphics3D::setViewport(int x, int y, int width, int height) {

@@ -1,9 +1,11 @@
 // javax.microedition.m3g.Graphics3D: the rendering context singleton
-// (spec digest §4.26, §9). This header holds the state, the properties and
-// the target binding rules; drawing is recorded by the Vulkan renderer.
+// (spec digest §4.26, §5.3, §5.4). State, properties and binding rules are
+// implemented in scene/; clear() and render() are implemented by render-vk,
+// which records them into a Vulkan command buffer submitted at releaseTarget.
 #pragma once
 
 #include <map>
+#include <memory>
 #include <string>
 #include <variant>
 #include <vector>
@@ -16,6 +18,18 @@
 #include <m3g/Transform.h>
 
 namespace m3g {
+
+class Appearance;
+class Background;
+class IndexBuffer;
+class Node;
+class VertexBuffer;
+class World;
+
+namespace detail {
+class RenderBackend;
+struct RenderQueue;
+}  // namespace detail
 
 class Graphics3D {
 public:
@@ -43,8 +57,35 @@ public:
     /// Binds a mutable RGB or RGBA Image2D. As above, plus IAE if the image is
     /// immutable or of another format. Resets the viewport to the whole image.
     void bindTarget(Image2D* target, bool depthBuffer, int hints);
-    /// Unbinds (after flushing rendering to the target); no-op if unbound.
+    /// Finishes the rendering recorded since bindTarget, writes the pixels
+    /// into the bound Image2D or Graphics, and unbinds; no-op if unbound.
     void releaseTarget();
+
+    /// Clears the viewport (within the Graphics clip) as spec §5.9: colour
+    /// and/or depth, then the background image. Null: colour 0x00000000 and
+    /// depth far. ISE if no target; IAE if the background image's format is
+    /// not the target's (RGB for Graphics and RGB Image2D, RGBA for RGBA).
+    void clear(Background* background);
+    /// Renders a World with its active camera, its lights and its background
+    /// (spec §5.3), then makes that camera and those lights Graphics3D's
+    /// current ones. Does not animate or align. NPE if null; ISE if no
+    /// target, no active camera, the camera is not in this World, or the
+    /// background image's format is not the target's.
+    void render(World* world);
+    /// Renders a Mesh, Sprite3D or Group (IAE otherwise, NPE if null) with
+    /// the current camera and lights; `transform` (null = identity) is the
+    /// node-to-world transform, replacing the node's own. ISE if no target
+    /// or no current camera.
+    void render(Node* node, const Transform* transform);
+    /// Immediate mode: one submesh with the current camera and lights, drawn
+    /// if `scope` & camera scope != 0. NPE if vertices, triangles or
+    /// appearance is null; ISE if no target or camera, or the vertex data is
+    /// invalid (no positions, indices out of range).
+    void render(VertexBuffer* vertices, IndexBuffer* triangles, Appearance* appearance, const Transform* transform) {
+        render(vertices, triangles, appearance, transform, -1);
+    }
+    void render(VertexBuffer* vertices, IndexBuffer* triangles, Appearance* appearance, const Transform* transform,
+                int scope);
     /// The bound Graphics or Image2D, or null.
     Ref<RefCounted> getTarget() const noexcept { return target_; }
     /// The hints given to bindTarget (0 when unbound).
@@ -97,9 +138,13 @@ public:
 
     Graphics3D(const Graphics3D&) = delete;
     Graphics3D& operator=(const Graphics3D&) = delete;
+    ~Graphics3D();
 
 private:
     Graphics3D();
+    /// The renderer (created by render-vk on the first clear or render).
+    detail::RenderBackend& backend();
+    void requireTarget(const char* where) const;
     void bindCommon(RefCounted* target, int width, int height, bool depthBuffer, int hints, const char* where);
 
     Ref<RefCounted> target_;
@@ -113,6 +158,8 @@ private:
     Ref<Camera> camera_;
     Transform cameraToWorld_, worldToCamera_;
     std::vector<LightEntry> lights_;
+    std::unique_ptr<detail::RenderBackend> backend_;
+    std::unique_ptr<detail::RenderQueue> queue_;
 };
 
 }  // namespace m3g

@@ -1,0 +1,93 @@
+#include "ImageIO.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+
+#include <png.h>
+
+namespace m3gcli {
+
+RgbaImage readPng(const std::string& path) {
+    png_image img{};
+    img.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_file(&img, path.c_str()))
+        throw std::runtime_error("cannot read PNG " + path + ": " + img.message);
+    img.format = PNG_FORMAT_RGBA;
+    RgbaImage out;
+    out.width = static_cast<int>(img.width);
+    out.height = static_cast<int>(img.height);
+    out.pixels.resize(PNG_IMAGE_SIZE(img));
+    if (!png_image_finish_read(&img, nullptr, out.pixels.data(), 0, nullptr)) {
+        std::string message = img.message;
+        png_image_free(&img);
+        throw std::runtime_error("cannot decode PNG " + path + ": " + message);
+    }
+    return out;
+}
+
+void writePng(const std::string& path, const RgbaImage& image, bool alpha) {
+    png_image img{};
+    img.version = PNG_IMAGE_VERSION;
+    img.width = static_cast<png_uint_32>(image.width);
+    img.height = static_cast<png_uint_32>(image.height);
+    img.format = PNG_FORMAT_RGBA;
+    std::vector<std::uint8_t> rgb;
+    const void* data = image.pixels.data();
+    if (!alpha) {
+        img.format = PNG_FORMAT_RGB;
+        rgb.resize(static_cast<std::size_t>(image.width) * image.height * 3);
+        for (std::size_t i = 0; i < rgb.size() / 3; ++i)
+            for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = image.pixels[i * 4 + c];
+        data = rgb.data();
+    }
+    const bool ok = path == "-" ? png_image_write_to_stdio(&img, stdout, 0, data, 0, nullptr)
+                                : png_image_write_to_file(&img, path.c_str(), 0, data, 0, nullptr);
+    if (!ok) throw std::runtime_error("cannot write PNG " + path + ": " + img.message);
+}
+
+Comparison compareImages(const RgbaImage& a, const RgbaImage& b, int threshold) {
+    if (a.width != b.width || a.height != b.height)
+        throw std::invalid_argument("images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
+                                    " and " + std::to_string(b.width) + "x" + std::to_string(b.height));
+    Comparison c;
+    c.total = static_cast<long long>(a.width) * a.height;
+    double squared = 0.0;
+    for (long long i = 0; i < c.total; ++i) {
+        int largest = 0;
+        for (int k = 0; k < 3; ++k) {
+            const int d = std::abs(static_cast<int>(a.pixels[i * 4 + k]) - static_cast<int>(b.pixels[i * 4 + k]));
+            largest = std::max(largest, d);
+            squared += static_cast<double>(d) * d;
+        }
+        if (largest > threshold) ++c.differing;
+        c.maxDifference = std::max(c.maxDifference, largest);
+    }
+    c.share = c.total ? static_cast<double>(c.differing) / static_cast<double>(c.total) : 0.0;
+    const double mse = c.total ? squared / (3.0 * static_cast<double>(c.total)) : 0.0;
+    c.psnr = mse == 0.0 ? std::numeric_limits<double>::infinity() : 10.0 * std::log10(255.0 * 255.0 / mse);
+    return c;
+}
+
+RgbaImage diffImage(const RgbaImage& a, const RgbaImage& b, int threshold) {
+    RgbaImage out = a;
+    const std::size_t n = static_cast<std::size_t>(a.width) * a.height;
+    for (std::size_t i = 0; i < n; ++i) {
+        int largest = 0;
+        for (int k = 0; k < 3; ++k)
+            largest = std::max(largest, std::abs(static_cast<int>(a.pixels[i * 4 + k]) - static_cast<int>(b.pixels[i * 4 + k])));
+        const auto grey = static_cast<std::uint8_t>((a.pixels[i * 4] + a.pixels[i * 4 + 1] + a.pixels[i * 4 + 2]) / 6);
+        if (largest > threshold) {
+            out.pixels[i * 4] = static_cast<std::uint8_t>(std::min(255, 128 + largest));
+            out.pixels[i * 4 + 1] = out.pixels[i * 4 + 2] = 0;
+        } else {
+            out.pixels[i * 4] = out.pixels[i * 4 + 1] = out.pixels[i * 4 + 2] = grey;
+        }
+        out.pixels[i * 4 + 3] = 255;
+    }
+    return out;
+}
+
+}  // namespace m3gcli

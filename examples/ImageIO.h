@@ -1,0 +1,38 @@
+// PNG reading/writing and image comparison for the m3g tool and the image
+// tests (architecture guide §7: count of pixels whose largest channel
+// difference exceeds a threshold, and PSNR). Part of m3g_cli_support.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace m3gcli {
+
+/// 8-bit RGBA pixels, rows top to bottom.
+struct RgbaImage {
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> pixels;
+};
+
+/// Reads any PNG as RGBA8. Throws std::runtime_error naming the file.
+RgbaImage readPng(const std::string& path);
+/// Writes RGBA8 (or RGB8 when `alpha` is false) to `path`; "-" is stdout.
+void writePng(const std::string& path, const RgbaImage& image, bool alpha);
+
+struct Comparison {
+    long long differing = 0;  ///< pixels whose largest RGB difference exceeds the threshold
+    long long total = 0;
+    double share = 0.0;       ///< differing / total
+    double psnr = 0.0;        ///< over RGB, in dB; infinity when identical
+    int maxDifference = 0;
+};
+
+/// Compares RGB channels of two images of the same size (throws
+/// std::invalid_argument otherwise).
+Comparison compareImages(const RgbaImage& a, const RgbaImage& b, int threshold);
+/// A diff image: grey copy of `a`, differing pixels in red with brightness
+/// by difference.
+RgbaImage diffImage(const RgbaImage& a, const RgbaImage& b, int threshold);
+
+}  // namespace m3gcli

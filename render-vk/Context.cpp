@@ -1,0 +1,542 @@
+#include "Context.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <sstream>
+#include <vector>
+
+namespace m3g::vk {
+
+namespace {
+
+std::atomic<std::uint64_t> gValidationMessages{0};
+std::mutex gMessageMutex;
+std::string gLastMessage;
+int gValidationRequest = -1;  // -1: from the environment
+std::mutex gContextMutex;
+std::shared_ptr<Context> gContext;
+std::atomic<bool> gExists{false};
+
+const char* kInstallHint =
+    "install a Vulkan loader and driver (Debian: apt-get install libvulkan1 mesa-vulkan-drivers) "
+    "or select another device with M3G_VK_DEVICE";
+
+VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                         VkDebugUtilsMessageTypeFlagsEXT type,
+                                         const VkDebugUtilsMessengerCallbackDataEXT* data, void*) {
+    const bool counted = (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) ||
+                         ((severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT) &&
+                          (type & VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT));
+    if (counted) {
+        ++gValidationMessages;
+        std::lock_guard lock(gMessageMutex);
+        gLastMessage = data && data->pMessage ? data->pMessage : "(no text)";
+        std::fprintf(stderr, "m3g-vk validation: %s\n", gLastMessage.c_str());
+    }
+    return VK_FALSE;
+}
+
+std::vector<std::string> gWindowExtensions;  // requested by a windowed application
+
+std::vector<const char*> windowExtensions() {
+    std::vector<const char*> out;
+    for (const auto& e : gWindowExtensions) out.push_back(e.c_str());
+    return out;
+}
+
+bool envValidation() {
+    if (gValidationRequest >= 0) return gValidationRequest == 1;
+    if (const char* v = std::getenv("M3G_VK_VALIDATION")) return std::strcmp(v, "0") != 0 && *v != '\0';
+#ifdef NDEBUG
+    return false;
+#else
+    return true;
+#endif
+}
+
+const char* typeName(VkPhysicalDeviceType t) {
+    switch (t) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual";
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return "cpu";
+    default: return "other";
+    }
+}
+
+int typeRank(VkPhysicalDeviceType t) {
+    switch (t) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 1;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return 3;
+    default: return 4;
+    }
+}
+
+std::string lower(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
+void loadLoader() {
+    static VkResult result = volkInitialize();
+    if (result != VK_SUCCESS)
+        throw VulkanError(std::string("m3g-vk: the Vulkan loader (libvulkan.so.1) could not be loaded; ") + kInstallHint);
+}
+
+VkInstance createInstance(bool wantValidation, bool& validation) {
+    loadLoader();
+    std::uint32_t version = VK_API_VERSION_1_0;
+    if (vkEnumerateInstanceVersion) vkEnumerateInstanceVersion(&version);
+    if (version < VK_API_VERSION_1_3)
+        throw VulkanError("m3g-vk: the Vulkan loader supports only version " + std::to_string(VK_API_VERSION_MAJOR(version)) +
+                          "." + std::to_string(VK_API_VERSION_MINOR(version)) + "; m3g-vk needs Vulkan 1.3");
+    std::vector<const char*> layers, extensions;
+    validation = false;
+    if (wantValidation) {
+        std::uint32_t n = 0;
+        vkEnumerateInstanceLayerProperties(&n, nullptr);
+        std::vector<VkLayerProperties> props(n);
+        vkEnumerateInstanceLayerProperties(&n, props.data());
+        for (const auto& p : props)
+            if (std::strcmp(p.layerName, "VK_LAYER_KHRONOS_validation") == 0) validation = true;
+        if (validation) {
+            layers.push_back("VK_LAYER_KHRONOS_validation");
+            extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+        } else {
+            std::fprintf(stderr, "m3g-vk: validation requested but VK_LAYER_KHRONOS_validation is not installed "
+                                 "(Debian: vulkan-validationlayers)\n");
+        }
+    }
+    // The window system extensions, when the loader has them (the viewer's swapchain).
+    std::uint32_t n = 0;
+    vkEnumerateInstanceExtensionProperties(nullptr, &n, nullptr);
+    std::vector<VkExtensionProperties> available(n);
+    vkEnumerateInstanceExtensionProperties(nullptr, &n, available.data());
+    for (const char* wanted : windowExtensions()) {
+        bool found = false;
+        for (const auto& e : available) found = found || std::strcmp(e.extensionName, wanted) == 0;
+        if (!found) throw VulkanError(std::string("m3g-vk: the Vulkan loader lacks the window extension ") + wanted);
+        extensions.push_back(wanted);
+    }
+
+    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+    app.pApplicationName = "m3g-vk";
+    app.pEngineName = "m3g-vk";
+    app.apiVersion = VK_API_VERSION_1_3;
+    VkInstanceCreateInfo ci{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+    ci.pApplicationInfo = &app;
+    ci.enabledLayerCount = static_cast<std::uint32_t>(layers.size());
+    ci.ppEnabledLayerNames = layers.data();
+    ci.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
+    ci.ppEnabledExtensionNames = extensions.data();
+    VkInstance instance = VK_NULL_HANDLE;
+    VkResult r = vkCreateInstance(&ci, nullptr, &instance);
+    if (r != VK_SUCCESS)
+        throw VulkanError(std::string("m3g-vk: vkCreateInstance failed (") + resultName(r) + "); " + kInstallHint);
+    volkLoadInstance(instance);
+    return instance;
+}
+
+std::vector<VkPhysicalDevice> physicalDevices(VkInstance instance) {
+    std::uint32_t n = 0;
+    vkEnumeratePhysicalDevices(instance, &n, nullptr);
+    std::vector<VkPhysicalDevice> out(n);
+    if (n) vkEnumeratePhysicalDevices(instance, &n, out.data());
+    return out;
+}
+
+DeviceInfo describe(VkPhysicalDevice pd) {
+    VkPhysicalDeviceProperties p;
+    vkGetPhysicalDeviceProperties(pd, &p);
+    return {p.deviceName, typeName(p.deviceType), p.apiVersion, p.vendorID, p.deviceID};
+}
+
+}  // namespace
+
+const char* resultName(VkResult r) {
+    switch (r) {
+    case VK_SUCCESS: return "VK_SUCCESS";
+    case VK_NOT_READY: return "VK_NOT_READY";
+    case VK_TIMEOUT: return "VK_TIMEOUT";
+    case VK_ERROR_OUT_OF_HOST_MEMORY: return "VK_ERROR_OUT_OF_HOST_MEMORY";
+    case VK_ERROR_OUT_OF_DEVICE_MEMORY: return "VK_ERROR_OUT_OF_DEVICE_MEMORY";
+    case VK_ERROR_INITIALIZATION_FAILED: return "VK_ERROR_INITIALIZATION_FAILED";
+    case VK_ERROR_DEVICE_LOST: return "VK_ERROR_DEVICE_LOST";
+    case VK_ERROR_LAYER_NOT_PRESENT: return "VK_ERROR_LAYER_NOT_PRESENT";
+    case VK_ERROR_EXTENSION_NOT_PRESENT: return "VK_ERROR_EXTENSION_NOT_PRESENT";
+    case VK_ERROR_FEATURE_NOT_PRESENT: return "VK_ERROR_FEATURE_NOT_PRESENT";
+    case VK_ERROR_INCOMPATIBLE_DRIVER: return "VK_ERROR_INCOMPATIBLE_DRIVER";
+    case VK_ERROR_FORMAT_NOT_SUPPORTED: return "VK_ERROR_FORMAT_NOT_SUPPORTED";
+    case VK_ERROR_OUT_OF_DATE_KHR: return "VK_ERROR_OUT_OF_DATE_KHR";
+    case VK_SUBOPTIMAL_KHR: return "VK_SUBOPTIMAL_KHR";
+    case VK_ERROR_SURFACE_LOST_KHR: return "VK_ERROR_SURFACE_LOST_KHR";
+    default: return "VkResult error";
+    }
+}
+
+void check(VkResult result, const char* what) {
+    if (result != VK_SUCCESS)
+        throw VulkanError(std::string("m3g-vk: ") + what + " failed (" + resultName(result) + ", " +
+                          std::to_string(static_cast<int>(result)) + ")");
+}
+
+bool Context::exists() noexcept { return gExists.load(); }
+
+Context& Context::get() { return *shared(); }
+
+std::shared_ptr<Context> Context::shared() {
+    std::lock_guard lock(gContextMutex);
+    if (!gContext) {
+        gContext.reset(new Context());
+        gExists = true;
+    }
+    return gContext;
+}
+
+Context::Context() {
+    instance_ = createInstance(envValidation(), validation_);
+    try {
+        if (validation_) {
+            VkDebugUtilsMessengerCreateInfoEXT mi{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+            mi.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+            mi.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                             VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+            mi.pfnUserCallback = onMessage;
+            check(vkCreateDebugUtilsMessengerEXT(instance_, &mi, nullptr, &messenger_), "vkCreateDebugUtilsMessengerEXT");
+        }
+
+        // Device choice: M3G_VK_DEVICE (index or name substring), else by type rank.
+        auto devices = physicalDevices(instance_);
+        std::vector<VkPhysicalDevice> usable;
+        for (auto pd : devices) {
+            VkPhysicalDeviceProperties p;
+            vkGetPhysicalDeviceProperties(pd, &p);
+            if (p.apiVersion >= VK_API_VERSION_1_3) usable.push_back(pd);
+        }
+        if (usable.empty())
+            throw VulkanError(std::string("m3g-vk: no Vulkan 1.3 device found (") + std::to_string(devices.size()) +
+                              " device(s) of older versions); " + kInstallHint);
+        VkPhysicalDevice chosen = VK_NULL_HANDLE;
+        if (const char* want = std::getenv("M3G_VK_DEVICE"); want && *want) {
+            char* end = nullptr;
+            long index = std::strtol(want, &end, 10);
+            if (end && *end == '\0') {
+                if (index < 0 || index >= static_cast<long>(devices.size()))
+                    throw VulkanError("m3g-vk: M3G_VK_DEVICE=" + std::string(want) + " is out of range [0, " +
+                                      std::to_string(devices.size()) + ")");
+                chosen = devices[index];
+            } else {
+                for (auto pd : devices)
+                    if (lower(describe(pd).name).find(lower(want)) != std::string::npos) {
+                        chosen = pd;
+                        break;
+                    }
+                if (!chosen) throw VulkanError("m3g-vk: no device name contains M3G_VK_DEVICE=\"" + std::string(want) + "\"");
+            }
+        } else {
+            chosen = *std::min_element(usable.begin(), usable.end(), [](VkPhysicalDevice a, VkPhysicalDevice b) {
+                VkPhysicalDeviceProperties pa, pb;
+                vkGetPhysicalDeviceProperties(a, &pa);
+                vkGetPhysicalDeviceProperties(b, &pb);
+                return typeRank(pa.deviceType) < typeRank(pb.deviceType);
+            });
+        }
+        physical_ = chosen;
+        vkGetPhysicalDeviceProperties(physical_, &properties_);
+        vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
+        info_ = describe(physical_);
+        if (properties_.apiVersion < VK_API_VERSION_1_3)
+            throw VulkanError("m3g-vk: device \"" + info_.name + "\" supports only Vulkan " +
+                              std::to_string(VK_API_VERSION_MAJOR(properties_.apiVersion)) + "." +
+                              std::to_string(VK_API_VERSION_MINOR(properties_.apiVersion)) + "; m3g-vk needs 1.3");
+
+        std::uint32_t nq = 0;
+        vkGetPhysicalDeviceQueueFamilyProperties(physical_, &nq, nullptr);
+        std::vector<VkQueueFamilyProperties> families(nq);
+        vkGetPhysicalDeviceQueueFamilyProperties(physical_, &nq, families.data());
+        bool found = false;
+        for (std::uint32_t i = 0; i < nq && !found; ++i)
+            if ((families[i].queueFlags & (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT)) ==
+                (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT)) {
+                queueFamily_ = i;
+                found = true;
+            }
+        if (!found) throw VulkanError("m3g-vk: device \"" + info_.name + "\" has no graphics+compute queue");
+
+        // Depth: D32_SFLOAT or D16_UNORM are the safe choices (guide §8).
+        depthFormat_ = VK_FORMAT_UNDEFINED;
+        for (VkFormat f : {VK_FORMAT_D32_SFLOAT, VK_FORMAT_D16_UNORM}) {
+            VkFormatProperties fp;
+            vkGetPhysicalDeviceFormatProperties(physical_, f, &fp);
+            if (fp.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT) {
+                depthFormat_ = f;
+                break;
+            }
+        }
+        if (depthFormat_ == VK_FORMAT_UNDEFINED) throw VulkanError("m3g-vk: no usable depth format");
+        const VkSampleCountFlags counts =
+            properties_.limits.framebufferColorSampleCounts & properties_.limits.framebufferDepthSampleCounts;
+        maxSamples_ = (counts & VK_SAMPLE_COUNT_4_BIT) ? VK_SAMPLE_COUNT_4_BIT
+                      : (counts & VK_SAMPLE_COUNT_2_BIT) ? VK_SAMPLE_COUNT_2_BIT
+                                                         : VK_SAMPLE_COUNT_1_BIT;
+
+        VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+        VkPhysicalDeviceFeatures2 f2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+        f2.pNext = &f13;
+        vkGetPhysicalDeviceFeatures2(physical_, &f2);
+        if (!f13.dynamicRendering || !f13.synchronization2)
+            throw VulkanError("m3g-vk: device \"" + info_.name + "\" lacks dynamicRendering or synchronization2");
+        VkPhysicalDeviceVulkan13Features enable13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+        enable13.dynamicRendering = VK_TRUE;
+        enable13.synchronization2 = VK_TRUE;
+        VkPhysicalDeviceFeatures2 enable{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+        enable.pNext = &enable13;
+        enable.features.samplerAnisotropy = VK_FALSE;
+
+        std::vector<const char*> extensions;
+        std::uint32_t ne = 0;
+        vkEnumerateDeviceExtensionProperties(physical_, nullptr, &ne, nullptr);
+        std::vector<VkExtensionProperties> available(ne);
+        vkEnumerateDeviceExtensionProperties(physical_, nullptr, &ne, available.data());
+        // Swapchains only for windowed applications (requestWindowExtensions).
+        if (!gWindowExtensions.empty())
+            for (const auto& e : available)
+                if (std::strcmp(e.extensionName, VK_KHR_SWAPCHAIN_EXTENSION_NAME) == 0)
+                    extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+
+        const float priority = 1.0f;
+        VkDeviceQueueCreateInfo qi{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+        qi.queueFamilyIndex = queueFamily_;
+        qi.queueCount = 1;
+        qi.pQueuePriorities = &priority;
+        VkDeviceCreateInfo di{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+        di.pNext = &enable;
+        di.queueCreateInfoCount = 1;
+        di.pQueueCreateInfos = &qi;
+        di.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
+        di.ppEnabledExtensionNames = extensions.data();
+        VkResult r = vkCreateDevice(physical_, &di, nullptr, &device_);
+        if (r != VK_SUCCESS)
+            throw VulkanError("m3g-vk: vkCreateDevice failed on \"" + info_.name + "\" (" + resultName(r) + "); " +
+                              kInstallHint);
+        volkLoadDevice(device_);
+        vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+        VkCommandPoolCreateInfo pi{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+        pi.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+        pi.queueFamilyIndex = queueFamily_;
+        check(vkCreateCommandPool(device_, &pi, nullptr, &pool_), "vkCreateCommandPool");
+    } catch (...) {
+        if (device_) vkDestroyDevice(device_, nullptr);
+        if (messenger_) vkDestroyDebugUtilsMessengerEXT(instance_, messenger_, nullptr);
+        vkDestroyInstance(instance_, nullptr);
+        throw;
+    }
+}
+
+Context::~Context() {
+    if (device_) {
+        vkDeviceWaitIdle(device_);
+        vkDestroyCommandPool(device_, pool_, nullptr);
+        vkDestroyDevice(device_, nullptr);
+    }
+    if (messenger_) vkDestroyDebugUtilsMessengerEXT(instance_, messenger_, nullptr);
+    if (instance_) vkDestroyInstance(instance_, nullptr);
+}
+
+std::uint32_t Context::memoryType(std::uint32_t bits, VkMemoryPropertyFlags want, VkMemoryPropertyFlags fallback) const {
+    for (VkMemoryPropertyFlags flags : {want, fallback})
+        for (std::uint32_t i = 0; i < memory_.memoryTypeCount; ++i)
+            if ((bits & (1u << i)) && (memory_.memoryTypes[i].propertyFlags & flags) == flags) return i;
+    throw VulkanError("m3g-vk: no suitable memory type");
+}
+
+Buffer Context::createHostBuffer(VkDeviceSize size, VkBufferUsageFlags usage) {
+    Buffer b;
+    b.size = size;
+    VkBufferCreateInfo bi{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    bi.size = size;
+    bi.usage = usage;
+    bi.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    check(vkCreateBuffer(device_, &bi, nullptr, &b.buffer), "vkCreateBuffer");
+    VkMemoryRequirements req;
+    vkGetBufferMemoryRequirements(device_, b.buffer, &req);
+    VkMemoryAllocateInfo ai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    ai.allocationSize = req.size;
+    // Device-local and host-visible when the device has it (lavapipe, ReBAR), else plain host memory.
+    ai.memoryTypeIndex = memoryType(req.memoryTypeBits,
+                                    VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT | VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
+                                        VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+                                    VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+    VkResult r = vkAllocateMemory(device_, &ai, nullptr, &b.memory);
+    if (r != VK_SUCCESS) {
+        vkDestroyBuffer(device_, b.buffer, nullptr);
+        check(r, "vkAllocateMemory (buffer)");
+    }
+    vkBindBufferMemory(device_, b.buffer, b.memory, 0);
+    check(vkMapMemory(device_, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped), "vkMapMemory");
+    ++liveBuffers;
+    memoryBytes += static_cast<std::int64_t>(req.size);
+    b.size = size;
+    return b;
+}
+
+void Context::destroy(Buffer& b) noexcept {
+    if (!b.buffer) return;
+    VkMemoryRequirements req;
+    vkGetBufferMemoryRequirements(device_, b.buffer, &req);
+    memoryBytes -= static_cast<std::int64_t>(req.size);
+    --liveBuffers;
+    vkDestroyBuffer(device_, b.buffer, nullptr);
+    vkFreeMemory(device_, b.memory, nullptr);
+    b = Buffer{};
+}
+
+Image Context::createImage(std::uint32_t width, std::uint32_t height, VkFormat format, VkImageUsageFlags usage,
+                           std::uint32_t mipLevels, VkSampleCountFlagBits samples) {
+    Image img;
+    img.format = format;
+    img.width = width;
+    img.height = height;
+    img.mipLevels = mipLevels;
+    VkImageCreateInfo ii{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    ii.imageType = VK_IMAGE_TYPE_2D;
+    ii.format = format;
+    ii.extent = {width, height, 1};
+    ii.mipLevels = mipLevels;
+    ii.arrayLayers = 1;
+    ii.samples = samples;
+    ii.tiling = VK_IMAGE_TILING_OPTIMAL;
+    ii.usage = usage;
+    ii.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    check(vkCreateImage(device_, &ii, nullptr, &img.image), "vkCreateImage");
+    VkMemoryRequirements req;
+    vkGetImageMemoryRequirements(device_, img.image, &req);
+    VkMemoryAllocateInfo ai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    ai.allocationSize = req.size;
+    ai.memoryTypeIndex = memoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0);
+    VkResult r = vkAllocateMemory(device_, &ai, nullptr, &img.memory);
+    if (r != VK_SUCCESS) {
+        vkDestroyImage(device_, img.image, nullptr);
+        check(r, "vkAllocateMemory (image)");
+    }
+    vkBindImageMemory(device_, img.image, img.memory, 0);
+    const bool depth = format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D16_UNORM;
+    VkImageViewCreateInfo vi{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    vi.image = img.image;
+    vi.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    vi.format = format;
+    vi.subresourceRange = {static_cast<VkImageAspectFlags>(depth ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT),
+                           0, mipLevels, 0, 1};
+    check(vkCreateImageView(device_, &vi, nullptr, &img.view), "vkCreateImageView");
+    img.bytes = req.size;
+    memoryBytes += static_cast<std::int64_t>(req.size);
+    ++liveTextures;
+    return img;
+}
+
+void Context::destroy(Image& img) noexcept {
+    if (!img.image) return;
+    memoryBytes -= static_cast<std::int64_t>(img.bytes);
+    --liveTextures;
+    vkDestroyImageView(device_, img.view, nullptr);
+    vkDestroyImage(device_, img.image, nullptr);
+    vkFreeMemory(device_, img.memory, nullptr);
+    img = Image{};
+}
+
+void Context::submitNow(const std::function<void(VkCommandBuffer)>& record) {
+    VkCommandBuffer cmd;
+    {
+        std::lock_guard lock(poolMutex_);
+        VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+        ai.commandPool = pool_;
+        ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+        ai.commandBufferCount = 1;
+        check(vkAllocateCommandBuffers(device_, &ai, &cmd), "vkAllocateCommandBuffers");
+    }
+    VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    vkBeginCommandBuffer(cmd, &bi);
+    record(cmd);
+    vkEndCommandBuffer(cmd);
+    VkFenceCreateInfo fi{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VkFence fence;
+    check(vkCreateFence(device_, &fi, nullptr, &fence), "vkCreateFence");
+    submit(cmd, fence);
+    VkResult r = vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX);
+    vkDestroyFence(device_, fence, nullptr);
+    {
+        std::lock_guard lock(poolMutex_);
+        vkFreeCommandBuffers(device_, pool_, 1, &cmd);
+    }
+    check(r, "vkWaitForFences (upload)");
+}
+
+void Context::submit(VkCommandBuffer cmd, VkFence fence) {
+    VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    si.commandBufferCount = 1;
+    si.pCommandBuffers = &cmd;
+    std::lock_guard lock(queueMutex_);
+    check(vkQueueSubmit(queue_, 1, &si, fence), "vkQueueSubmit");
+}
+
+// ---- public functions (Vulkan.h) ----
+
+std::vector<DeviceInfo> listDevices() {
+    if (Context::exists()) {
+        std::vector<DeviceInfo> out;
+        for (auto pd : physicalDevices(Context::get().instance())) out.push_back(describe(pd));
+        return out;
+    }
+    bool validation = false;
+    VkInstance instance = createInstance(false, validation);
+    std::vector<DeviceInfo> out;
+    for (auto pd : physicalDevices(instance)) out.push_back(describe(pd));
+    vkDestroyInstance(instance, nullptr);
+    return out;
+}
+
+DeviceInfo currentDevice() { return Context::get().info(); }
+
+bool requestValidation(bool enable) {
+    std::lock_guard lock(gContextMutex);
+    if (gContext) return false;
+    gValidationRequest = enable ? 1 : 0;
+    return true;
+}
+
+bool requestWindowExtensions(const std::vector<std::string>& instanceExtensions) {
+    std::lock_guard lock(gContextMutex);
+    if (gContext) return false;
+    gWindowExtensions = instanceExtensions;
+    return true;
+}
+
+bool validationEnabled() { return Context::exists() && Context::get().validation(); }
+std::uint64_t validationMessageCount() { return gValidationMessages.load(); }
+std::string lastValidationMessage() {
+    std::lock_guard lock(gMessageMutex);
+    return gLastMessage;
+}
+
+RenderStats renderStats() {
+    RenderStats s;
+    if (!Context::exists()) return s;
+    Context& c = Context::get();
+    s.pipelinesCreated = c.pipelinesCreated;
+    s.draws = c.draws;
+    s.bufferUploads = c.bufferUploads;
+    s.textureUploads = c.textureUploads;
+    s.frames = c.frames;
+    s.liveBuffers = static_cast<std::uint64_t>(std::max<std::int64_t>(0, c.liveBuffers));
+    s.liveTextures = static_cast<std::uint64_t>(std::max<std::int64_t>(0, c.liveTextures));
+    s.deviceMemoryBytes = static_cast<std::uint64_t>(std::max<std::int64_t>(0, c.memoryBytes));
+    return s;
+}
+
+}  // namespace m3g::vk

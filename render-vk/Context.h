@@ -1,0 +1,104 @@
+// The process-wide Vulkan instance and device (architecture guide §7: one
+// device per process, shared by every Graphics3D). Functions come through
+// volk, so a missing libvulkan is a VulkanError at first use, not a failure
+// to start the program.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include <volk.h>
+
+#include <m3g/vk/Vulkan.h>
+
+namespace m3g::vk {
+
+/// Throws VulkanError naming `what` when `result` is not VK_SUCCESS.
+void check(VkResult result, const char* what);
+const char* resultName(VkResult result);
+
+struct Buffer {
+    VkBuffer buffer = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkDeviceSize size = 0;
+    void* mapped = nullptr;  ///< persistently mapped (host-visible buffers)
+};
+
+struct Image {
+    VkImage image = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    std::uint32_t width = 0, height = 0, mipLevels = 1;
+    VkDeviceSize bytes = 0;
+};
+
+class Context {
+public:
+    /// The shared context, created on first call (throws VulkanError).
+    static Context& get();
+    /// The same, shared: holders (renderers) keep the device alive until
+    /// they are gone, whatever the order of static destruction.
+    static std::shared_ptr<Context> shared();
+    /// True once get() has succeeded.
+    static bool exists() noexcept;
+
+    VkInstance instance() const noexcept { return instance_; }
+    VkPhysicalDevice physicalDevice() const noexcept { return physical_; }
+    VkDevice device() const noexcept { return device_; }
+    VkQueue queue() const noexcept { return queue_; }
+    std::uint32_t queueFamily() const noexcept { return queueFamily_; }
+    const VkPhysicalDeviceProperties& properties() const noexcept { return properties_; }
+    const DeviceInfo& info() const noexcept { return info_; }
+    VkFormat depthFormat() const noexcept { return depthFormat_; }
+    VkSampleCountFlagBits maxSamples() const noexcept { return maxSamples_; }
+    bool validation() const noexcept { return validation_; }
+
+    /// Host-visible, coherent, persistently mapped buffer.
+    Buffer createHostBuffer(VkDeviceSize size, VkBufferUsageFlags usage);
+    void destroy(Buffer& buffer) noexcept;
+    /// Device-local 2D image with a view (colour or depth aspect by format).
+    Image createImage(std::uint32_t width, std::uint32_t height, VkFormat format, VkImageUsageFlags usage,
+                      std::uint32_t mipLevels = 1, VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT);
+    void destroy(Image& image) noexcept;
+
+    /// Records `record` into a one-shot command buffer, submits it and waits.
+    void submitNow(const std::function<void(VkCommandBuffer)>& record);
+    /// Submits `cmd` signalling `fence` (queue access is serialised).
+    void submit(VkCommandBuffer cmd, VkFence fence);
+
+    VkCommandPool commandPool() const noexcept { return pool_; }
+    std::mutex& poolMutex() noexcept { return poolMutex_; }
+
+    std::atomic<std::uint64_t> pipelinesCreated{0}, draws{0}, bufferUploads{0}, textureUploads{0}, frames{0};
+    std::atomic<std::int64_t> liveBuffers{0}, liveTextures{0}, memoryBytes{0};
+
+    ~Context();
+    Context(const Context&) = delete;
+    Context& operator=(const Context&) = delete;
+
+private:
+    Context();
+    std::uint32_t memoryType(std::uint32_t bits, VkMemoryPropertyFlags want, VkMemoryPropertyFlags fallback) const;
+
+    VkInstance instance_ = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    VkPhysicalDevice physical_ = VK_NULL_HANDLE;
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkQueue queue_ = VK_NULL_HANDLE;
+    std::uint32_t queueFamily_ = 0;
+    VkCommandPool pool_ = VK_NULL_HANDLE;
+    VkPhysicalDeviceProperties properties_{};
+    VkPhysicalDeviceMemoryProperties memory_{};
+    DeviceInfo info_;
+    VkFormat depthFormat_ = VK_FORMAT_D32_SFLOAT;
+    VkSampleCountFlagBits maxSamples_ = VK_SAMPLE_COUNT_1_BIT;
+    bool validation_ = false;
+    std::mutex queueMutex_, poolMutex_;
+};
+
+}  // namespace m3g::vk

@@ -1,0 +1,125 @@
+// Graphics3D's clear() and render() (spec digest §4.26, §5.3): the checks,
+// the collect step (scene/RenderQueue) and the hand-over to the renderer.
+#include <m3g/Appearance.h>
+#include <m3g/Background.h>
+#include <m3g/Graphics3D.h>
+#include <m3g/Group.h>
+#include <m3g/Image2D.h>
+#include <m3g/IndexBuffer.h>
+#include <m3g/Mesh.h>
+#include <m3g/Sprite3D.h>
+#include <m3g/VertexBuffer.h>
+#include <m3g/World.h>
+
+#include "Check.h"
+#include "RenderQueue.h"
+#include "Renderer.h"
+
+namespace m3g {
+
+namespace {
+
+/// The Image2D format the target's pixels have (RGB for a Graphics surface).
+int targetFormat(const Graphics3D& g) { return g.targetImage() ? g.targetImage()->getFormat() : Image2D::RGB; }
+
+bool backgroundMatches(const Graphics3D& g, const Background* background) {
+    const Image2D* image = background ? background->getImage().get() : nullptr;
+    return !image || image->getFormat() == targetFormat(g);
+}
+
+void collectWorldLights(const Node& node, const Transform& toWorld, std::vector<Graphics3D::LightEntry>& out) {
+    if (!node.isRenderingEnabled()) return;
+    if (auto* light = dynamic_cast<const Light*>(&node)) out.push_back({const_cast<Light*>(light), toWorld});
+    std::vector<Node*> children;
+    node.collectChildren(children);
+    for (Node* child : children) collectWorldLights(*child, toWorld * child->compositeTransform(), out);
+}
+
+}  // namespace
+
+detail::RenderBackend& Graphics3D::backend() {
+    if (!backend_) backend_ = std::make_unique<vk::Renderer>();
+    return *backend_;
+}
+
+void Graphics3D::clear(Background* background) {
+    requireTarget("Graphics3D::clear");
+    if (!backgroundMatches(*this, background))
+        throw IllegalArgumentException(detail::str("Graphics3D::clear: the background image format ",
+                                                   background->getImage()->getFormat(),
+                                                   " is not the target's format ", targetFormat(*this)));
+    backend().clear(*this, background);
+}
+
+void Graphics3D::render(World* world) {
+    const char* where = "Graphics3D::render(World)";
+    detail::requireNonNull(world, where, "world");
+    requireTarget(where);
+    Ref<Camera> camera = world->getActiveCamera();
+    if (!camera) throw IllegalStateException(detail::str(where, ": the World has no active camera"));
+    if (camera->root() != world)
+        throw IllegalStateException(detail::str(where, ": the active camera is not in this World"));
+    Background* background = world->getBackground().get();
+    if (!backgroundMatches(*this, background))
+        throw IllegalStateException(detail::str(where, ": the background image format ", background->getImage()->getFormat(),
+                                                " is not the target's format ", targetFormat(*this)));
+    Transform cameraToWorld;
+    camera->getTransformTo(world, &cameraToWorld);
+    setCamera(camera.get(), &cameraToWorld);  // ArithmeticException if singular
+
+    // The World's lights replace Graphics3D's (spec §4.26).
+    std::vector<LightEntry> found;
+    collectWorldLights(*world, Transform(), found);
+    lights_ = std::move(found);
+
+    detail::RenderQueue& q = *queue_;
+    q.reset(*camera, getLimits().maxLights);
+    for (const LightEntry& l : lights_) q.addLight(*l.light, worldToCamera_ * l.toWorld);
+    q.collectNode(*world, worldToCamera_ * world->compositeTransform());
+    q.sort();
+    backend().clear(*this, background);
+    backend().render(*this, q);
+}
+
+void Graphics3D::render(Node* node, const Transform* transform) {
+    const char* where = "Graphics3D::render(Node, Transform)";
+    detail::requireNonNull(node, where, "node");
+    if (!dynamic_cast<Mesh*>(node) && !dynamic_cast<Sprite3D*>(node) && !dynamic_cast<Group*>(node))
+        throw IllegalArgumentException(detail::str(where, ": a ", node->getClassName(),
+                                                   " cannot be rendered (Mesh, Sprite3D or Group only)"));
+    requireTarget(where);
+    if (!camera_) throw IllegalStateException(detail::str(where, ": no current camera (call setCamera first)"));
+    detail::RenderQueue& q = *queue_;
+    q.reset(*camera_, getLimits().maxLights);
+    for (const LightEntry& l : lights_)
+        if (l.light) q.addLight(*l.light, worldToCamera_ * l.toWorld);
+    const Transform nodeToWorld = transform ? *transform : Transform();
+    q.collectNode(*node, worldToCamera_ * nodeToWorld);
+    q.sort();
+    backend().render(*this, q);
+}
+
+void Graphics3D::render(VertexBuffer* vertices, IndexBuffer* triangles, Appearance* appearance,
+                        const Transform* transform, int scope) {
+    const char* where = "Graphics3D::render(VertexBuffer, IndexBuffer, Appearance, Transform)";
+    detail::requireNonNull(vertices, where, "vertices");
+    detail::requireNonNull(triangles, where, "triangles");
+    detail::requireNonNull(appearance, where, "appearance");
+    requireTarget(where);
+    if (!camera_) throw IllegalStateException(detail::str(where, ": no current camera (call setCamera first)"));
+    if (!vertices->positions())
+        throw IllegalStateException(detail::str(where, ": the VertexBuffer has no positions"));
+    if (triangles->maxIndex() >= vertices->getVertexCount())
+        throw IllegalStateException(detail::str(where, ": index ", triangles->maxIndex(), " is out of range [0, ",
+                                                vertices->getVertexCount(), ") of the VertexBuffer"));
+    detail::RenderQueue& q = *queue_;
+    q.reset(*camera_, getLimits().maxLights);
+    if ((scope & camera_->getScope()) == 0) return;
+    for (const LightEntry& l : lights_)
+        if (l.light) q.addLight(*l.light, worldToCamera_ * l.toWorld);
+    const Transform modelToWorld = transform ? *transform : Transform();
+    q.addSubmesh(vertices, triangles, appearance, worldToCamera_ * modelToWorld, scope);
+    backend().render(*this, q);
+}
+
+}  // namespace m3g

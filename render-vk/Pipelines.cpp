@@ -1,0 +1,159 @@
+#include "Pipelines.h"
+
+#include <array>
+
+#include "m3g_frag.h"  // generated from shaders/ by glslangValidator at build time
+#include "m3g_vert.h"
+
+namespace m3g::vk {
+
+namespace {
+
+VkShaderModule createModule(VkDevice device, const std::uint32_t* code, std::size_t bytes) {
+    VkShaderModuleCreateInfo ci{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    ci.codeSize = bytes;
+    ci.pCode = code;
+    VkShaderModule module;
+    check(vkCreateShaderModule(device, &ci, nullptr, &module), "vkCreateShaderModule");
+    return module;
+}
+
+// Spec digest §5.8: the same factors on colour and alpha.
+VkPipelineColorBlendAttachmentState blendState(std::uint8_t blend, std::uint8_t mask) {
+    VkPipelineColorBlendAttachmentState b{};
+    b.colorWriteMask = mask;
+    b.colorBlendOp = b.alphaBlendOp = VK_BLEND_OP_ADD;
+    auto factors = [&](VkBlendFactor src, VkBlendFactor dst) {
+        b.blendEnable = VK_TRUE;
+        b.srcColorBlendFactor = b.srcAlphaBlendFactor = src;
+        b.dstColorBlendFactor = b.dstAlphaBlendFactor = dst;
+    };
+    switch (blend) {
+    case 1: factors(VK_BLEND_FACTOR_SRC_ALPHA, VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA); break;
+    case 2: factors(VK_BLEND_FACTOR_SRC_ALPHA, VK_BLEND_FACTOR_ONE); break;
+    case 3: factors(VK_BLEND_FACTOR_DST_COLOR, VK_BLEND_FACTOR_ZERO); break;
+    case 4: factors(VK_BLEND_FACTOR_DST_COLOR, VK_BLEND_FACTOR_SRC_COLOR); break;
+    default: b.blendEnable = VK_FALSE; break;
+    }
+    return b;
+}
+
+}  // namespace
+
+Pipelines::Pipelines(Context& ctx) : ctx_(ctx) {
+    VkDevice device = ctx.device();
+    VkDescriptorSetLayoutBinding ub{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1,
+                                    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
+    VkDescriptorSetLayoutCreateInfo li{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    li.bindingCount = 1;
+    li.pBindings = &ub;
+    check(vkCreateDescriptorSetLayout(device, &li, nullptr, &uniformSet_), "vkCreateDescriptorSetLayout");
+    VkDescriptorSetLayoutBinding tb{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
+    li.pBindings = &tb;
+    check(vkCreateDescriptorSetLayout(device, &li, nullptr, &textureSet_), "vkCreateDescriptorSetLayout");
+    std::array<VkDescriptorSetLayout, 2> sets{uniformSet_, textureSet_};
+    VkPipelineLayoutCreateInfo pl{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    pl.setLayoutCount = 2;
+    pl.pSetLayouts = sets.data();
+    check(vkCreatePipelineLayout(device, &pl, nullptr, &layout_), "vkCreatePipelineLayout");
+    vert_ = createModule(device, m3g_vert, sizeof(m3g_vert));
+    frag_ = createModule(device, m3g_frag, sizeof(m3g_frag));
+    VkPipelineCacheCreateInfo ci{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
+    check(vkCreatePipelineCache(device, &ci, nullptr, &cache_), "vkCreatePipelineCache");
+}
+
+Pipelines::~Pipelines() {
+    VkDevice device = ctx_.device();
+    for (auto& [key, p] : pipelines_) vkDestroyPipeline(device, p, nullptr);
+    vkDestroyPipelineCache(device, cache_, nullptr);
+    vkDestroyShaderModule(device, vert_, nullptr);
+    vkDestroyShaderModule(device, frag_, nullptr);
+    vkDestroyPipelineLayout(device, layout_, nullptr);
+    vkDestroyDescriptorSetLayout(device, uniformSet_, nullptr);
+    vkDestroyDescriptorSetLayout(device, textureSet_, nullptr);
+}
+
+VkPipeline Pipelines::get(const PipelineKey& key) {
+    auto it = pipelines_.find(key.packed());
+    if (it != pipelines_.end()) return it->second;
+    VkPipeline p = create(key);
+    pipelines_.emplace(key.packed(), p);
+    return p;
+}
+
+void Pipelines::prewarm(std::uint8_t samples) {
+    for (std::uint8_t blend = 0; blend < 5; ++blend) get({blend, 0xF, samples});
+}
+
+VkPipeline Pipelines::create(const PipelineKey& key) {
+    std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
+    stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, vert_, "main", nullptr};
+    stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT, frag_, "main", nullptr};
+
+    // Five streams: position, normal, colour, texcoord 0, texcoord 1. Strides
+    // are dynamic so that a missing array binds a dummy buffer with stride 0.
+    std::array<VkVertexInputBindingDescription, 5> bindings{};
+    std::array<VkVertexInputAttributeDescription, 5> attributes{};
+    const VkFormat formats[5] = {VK_FORMAT_R32G32B32_SFLOAT, VK_FORMAT_R32G32B32_SFLOAT, VK_FORMAT_R32G32B32A32_SFLOAT,
+                                 VK_FORMAT_R32G32B32_SFLOAT, VK_FORMAT_R32G32B32_SFLOAT};
+    const std::uint32_t strides[5] = {12, 12, 16, 12, 12};
+    for (std::uint32_t i = 0; i < 5; ++i) {
+        bindings[i] = {i, strides[i], VK_VERTEX_INPUT_RATE_VERTEX};
+        attributes[i] = {i, i, formats[i], 0};
+    }
+    VkPipelineVertexInputStateCreateInfo vi{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    vi.vertexBindingDescriptionCount = 5;
+    vi.pVertexBindingDescriptions = bindings.data();
+    vi.vertexAttributeDescriptionCount = 5;
+    vi.pVertexAttributeDescriptions = attributes.data();
+    VkPipelineInputAssemblyStateCreateInfo ia{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+    ia.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkPipelineViewportStateCreateInfo vp{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+    vp.viewportCount = 1;
+    vp.scissorCount = 1;
+    VkPipelineRasterizationStateCreateInfo rs{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+    rs.polygonMode = VK_POLYGON_MODE_FILL;
+    rs.lineWidth = 1.0f;
+    VkPipelineMultisampleStateCreateInfo ms{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+    ms.rasterizationSamples = static_cast<VkSampleCountFlagBits>(key.samples);
+    VkPipelineDepthStencilStateCreateInfo ds{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+    ds.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
+    const VkPipelineColorBlendAttachmentState attachment = blendState(key.blend, key.writeMask);
+    VkPipelineColorBlendStateCreateInfo cb{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+    cb.attachmentCount = 1;
+    cb.pAttachments = &attachment;
+    const VkDynamicState dynamic[] = {
+        VK_DYNAMIC_STATE_VIEWPORT,          VK_DYNAMIC_STATE_SCISSOR,           VK_DYNAMIC_STATE_CULL_MODE,
+        VK_DYNAMIC_STATE_FRONT_FACE,        VK_DYNAMIC_STATE_DEPTH_TEST_ENABLE, VK_DYNAMIC_STATE_DEPTH_WRITE_ENABLE,
+        VK_DYNAMIC_STATE_DEPTH_COMPARE_OP,  VK_DYNAMIC_STATE_DEPTH_BIAS_ENABLE, VK_DYNAMIC_STATE_DEPTH_BIAS,
+        VK_DYNAMIC_STATE_VERTEX_INPUT_BINDING_STRIDE,
+    };
+    VkPipelineDynamicStateCreateInfo dy{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+    dy.dynamicStateCount = static_cast<std::uint32_t>(std::size(dynamic));
+    dy.pDynamicStates = dynamic;
+    const VkFormat colorFormat = VK_FORMAT_R8G8B8A8_UNORM;
+    VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachmentFormats = &colorFormat;
+    rendering.depthAttachmentFormat = ctx_.depthFormat();
+
+    VkGraphicsPipelineCreateInfo gi{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+    gi.pNext = &rendering;
+    gi.stageCount = 2;
+    gi.pStages = stages.data();
+    gi.pVertexInputState = &vi;
+    gi.pInputAssemblyState = &ia;
+    gi.pViewportState = &vp;
+    gi.pRasterizationState = &rs;
+    gi.pMultisampleState = &ms;
+    gi.pDepthStencilState = &ds;
+    gi.pColorBlendState = &cb;
+    gi.pDynamicState = &dy;
+    gi.layout = layout_;
+    VkPipeline pipeline;
+    check(vkCreateGraphicsPipelines(ctx_.device(), cache_, 1, &gi, nullptr, &pipeline), "vkCreateGraphicsPipelines");
+    ++ctx_.pipelinesCreated;
+    return pipeline;
+}
+
+}  // namespace m3g::vk

@@ -1,0 +1,634 @@
+#include "Renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include <glm/glm.hpp>
+
+#include <m3g/Appearance.h>
+#include <m3g/Background.h>
+#include <m3g/CompositingMode.h>
+#include <m3g/Fog.h>
+#include <m3g/Graphics.h>
+#include <m3g/Graphics3D.h>
+#include <m3g/Image2D.h>
+#include <m3g/Light.h>
+#include <m3g/Material.h>
+#include <m3g/Mesh.h>
+#include <m3g/PolygonMode.h>
+#include <m3g/Texture2D.h>
+#include <m3g/VertexBuffer.h>
+
+#include "RenderQueue.h"
+
+namespace m3g::vk {
+
+namespace {
+
+constexpr std::uint32_t kDrawsPerChunk = 256;
+constexpr VkDeviceSize kQuadBytes = 6 * 6 * sizeof(float);
+
+void toColumns(const Transform& t, float* out) {
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) out[c * 4 + r] = t.at(r, c);
+}
+
+void identity(float* out) {
+    std::memset(out, 0, 16 * sizeof(float));
+    out[0] = out[5] = out[10] = out[15] = 1.0f;
+}
+
+/// OpenGL clip space to Vulkan's: y down, z from [-w, w] to [0, w].
+Transform vulkanProjection(const Transform& gl) {
+    Transform fix = Transform::fromRows({1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 0.5f, 0.5f, 0, 0, 0, 1});
+    return fix * gl;
+}
+
+void argb(std::uint32_t c, float* out, bool withAlpha) {
+    out[0] = static_cast<float>((c >> 16) & 0xFF) / 255.0f;
+    out[1] = static_cast<float>((c >> 8) & 0xFF) / 255.0f;
+    out[2] = static_cast<float>(c & 0xFF) / 255.0f;
+    out[3] = withAlpha ? static_cast<float>((c >> 24) & 0xFF) / 255.0f : 1.0f;
+}
+
+std::uint8_t blendIndex(const CompositingMode* cm) {
+    if (!cm) return 0;
+    switch (cm->getBlending()) {
+    case CompositingMode::ALPHA: return 1;
+    case CompositingMode::ALPHA_ADD: return 2;
+    case CompositingMode::MODULATE: return 3;
+    case CompositingMode::MODULATE_X2: return 4;
+    default: return 0;
+    }
+}
+
+std::int32_t texFunc(int blending) {
+    switch (blending) {
+    case Texture2D::FUNC_REPLACE: return TEX_REPLACE;
+    case Texture2D::FUNC_MODULATE: return TEX_MODULATE;
+    case Texture2D::FUNC_DECAL: return TEX_DECAL;
+    case Texture2D::FUNC_BLEND: return TEX_BLEND;
+    case Texture2D::FUNC_ADD: return TEX_ADD;
+    default: return TEX_MODULATE;
+    }
+}
+
+void barrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
+             VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess, VkPipelineStageFlags2 dstStage,
+             VkAccessFlags2 dstAccess) {
+    VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+    b.srcStageMask = srcStage;
+    b.srcAccessMask = srcAccess;
+    b.dstStageMask = dstStage;
+    b.dstAccessMask = dstAccess;
+    b.oldLayout = from;
+    b.newLayout = to;
+    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = image;
+    b.subresourceRange = {aspect, 0, 1, 0, 1};
+    VkDependencyInfo d{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    d.imageMemoryBarrierCount = 1;
+    d.pImageMemoryBarriers = &b;
+    vkCmdPipelineBarrier2(cmd, &d);
+}
+
+}  // namespace
+
+Renderer::Renderer() : ctx_(Context::shared()) {
+    pipelines_ = std::make_unique<Pipelines>(*ctx_);
+    resources_ = std::make_unique<ResourceCache>(*ctx_, pipelines_->textureSetLayout());
+    const auto align = static_cast<std::uint32_t>(ctx_->properties().limits.minUniformBufferOffsetAlignment);
+    uniformStride_ = static_cast<std::uint32_t>((sizeof(DrawUniforms) + align - 1) / align * align);
+    VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1024};
+    VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    pi.maxSets = 1024;
+    pi.poolSizeCount = 1;
+    pi.pPoolSizes = &size;
+    check(vkCreateDescriptorPool(ctx_->device(), &pi, nullptr, &uniformPool_), "vkCreateDescriptorPool");
+    quads_ = ctx_->createHostBuffer(kQuadBytes * 1024, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    dummy_ = ctx_->createHostBuffer(64, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    std::memset(dummy_.mapped, 0, 64);
+    VkFenceCreateInfo fi{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    check(vkCreateFence(ctx_->device(), &fi, nullptr, &fence_), "vkCreateFence");
+    {
+        std::lock_guard lock(ctx_->poolMutex());
+        VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+        ai.commandPool = ctx_->commandPool();
+        ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+        ai.commandBufferCount = 1;
+        check(vkAllocateCommandBuffers(ctx_->device(), &ai, &cmd_), "vkAllocateCommandBuffers");
+    }
+    pipelines_->prewarm(1);
+}
+
+Renderer::~Renderer() {
+    VkDevice device = ctx_->device();
+    vkDeviceWaitIdle(device);
+    resources_.reset();
+    for (auto& c : chunks_) ctx_->destroy(c.buffer);
+    vkDestroyDescriptorPool(device, uniformPool_, nullptr);
+    ctx_->destroy(quads_);
+    ctx_->destroy(dummy_);
+    ctx_->destroy(transfer_);
+    ctx_->destroy(color_);
+    ctx_->destroy(depth_);
+    vkDestroyFence(device, fence_, nullptr);
+    std::lock_guard lock(ctx_->poolMutex());
+    vkFreeCommandBuffers(device, ctx_->commandPool(), 1, &cmd_);
+}
+
+void Renderer::ensureTargetImages(std::uint32_t width, std::uint32_t height) {
+    if (color_.image && width_ == width && height_ == height) return;
+    ctx_->destroy(color_);
+    ctx_->destroy(depth_);
+    ctx_->destroy(transfer_);
+    color_ = ctx_->createImage(width, height, VK_FORMAT_R8G8B8A8_UNORM,
+                               VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                   VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+    depth_ = ctx_->createImage(width, height, ctx_->depthFormat(), VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
+    transfer_ = ctx_->createHostBuffer(static_cast<VkDeviceSize>(width) * height * 4,
+                                       VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    width_ = width;
+    height_ = height;
+}
+
+void Renderer::begin(Graphics3D& g3d) {
+    if (recording_) return;
+    const auto w = static_cast<std::uint32_t>(g3d.targetWidth()), h = static_cast<std::uint32_t>(g3d.targetHeight());
+    ensureTargetImages(w, h);
+    hasDepth_ = g3d.isDepthBufferEnabled();
+    const bool overwrite = (g3d.getHints() & Graphics3D::OVERWRITE) != 0;
+
+    // The target's current pixels are the starting contents (unless OVERWRITE).
+    if (!overwrite) {
+        auto* dst = static_cast<std::uint8_t*>(transfer_.mapped);
+        if (Image2D* image = g3d.targetImage()) {
+            std::vector<std::uint8_t> rgba;
+            image->getPixelsRGBA8(rgba);
+            std::memcpy(dst, rgba.data(), std::min<std::size_t>(rgba.size(), transfer_.size));
+        } else if (Graphics* graphics = g3d.targetGraphics()) {
+            const auto px = graphics->pixels();
+            for (std::size_t i = 0; i < px.size(); ++i) {
+                dst[i * 4 + 0] = static_cast<std::uint8_t>(px[i] >> 16);
+                dst[i * 4 + 1] = static_cast<std::uint8_t>(px[i] >> 8);
+                dst[i * 4 + 2] = static_cast<std::uint8_t>(px[i]);
+                dst[i * 4 + 3] = static_cast<std::uint8_t>(px[i] >> 24);
+            }
+        }
+    }
+
+    resources_->beginFrame();
+    chunk_ = 0;
+    chunkOffset_ = 0;
+    quadOffset_ = 0;
+    boundPipeline_ = ~0u;
+    cull_ = frontFace_ = depthTest_ = depthWrite_ = biasEnabled_ = -1;
+    boundTextures_ = VK_NULL_HANDLE;
+
+    vkResetCommandBuffer(cmd_, 0);
+    VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    check(vkBeginCommandBuffer(cmd_, &bi), "vkBeginCommandBuffer");
+    if (!overwrite) {
+        barrier(cmd_, color_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        VkBufferImageCopy copy{};
+        copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        copy.imageExtent = {w, h, 1};
+        vkCmdCopyBufferToImage(cmd_, transfer_.buffer, color_.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+        barrier(cmd_, color_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    } else {
+        barrier(cmd_, color_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
+                VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    }
+    barrier(cmd_, depth_.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+            VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
+            VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+            VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+
+    VkRenderingAttachmentInfo colorAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    colorAttachment.imageView = color_.view;
+    colorAttachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    colorAttachment.loadOp = overwrite ? VK_ATTACHMENT_LOAD_OP_DONT_CARE : VK_ATTACHMENT_LOAD_OP_LOAD;
+    colorAttachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    VkRenderingAttachmentInfo depthAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    depthAttachment.imageView = depth_.view;
+    depthAttachment.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    depthAttachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;  // a fresh target's depth is far
+    depthAttachment.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    depthAttachment.clearValue.depthStencil = {1.0f, 0};
+    VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    ri.renderArea = {{0, 0}, {w, h}};
+    ri.layerCount = 1;
+    ri.colorAttachmentCount = 1;
+    ri.pColorAttachments = &colorAttachment;
+    ri.pDepthAttachment = &depthAttachment;
+    vkCmdBeginRendering(cmd_, &ri);
+    recording_ = true;
+}
+
+void Renderer::applyViewport(Graphics3D& g3d) {
+    int ox = 0, oy = 0;
+    Rect clip{0, 0, static_cast<int>(width_), static_cast<int>(height_)};
+    if (Graphics* g = g3d.targetGraphics()) {
+        ox = g->getTranslateX();
+        oy = g->getTranslateY();
+        clip = {g->getClipX() + ox, g->getClipY() + oy, g->getClipWidth(), g->getClipHeight()};
+    }
+    viewport_ = {g3d.getViewportX() + ox, g3d.getViewportY() + oy, g3d.getViewportWidth(), g3d.getViewportHeight()};
+    const int x0 = std::max({viewport_.x, clip.x, 0});
+    const int y0 = std::max({viewport_.y, clip.y, 0});
+    const int x1 = std::min({viewport_.x + viewport_.w, clip.x + clip.w, static_cast<int>(width_)});
+    const int y1 = std::min({viewport_.y + viewport_.h, clip.y + clip.h, static_cast<int>(height_)});
+    scissorEmpty_ = x1 <= x0 || y1 <= y0;
+    scissor_ = {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
+    depthNear_ = g3d.getDepthRangeNear();
+    depthFar_ = g3d.getDepthRangeFar();
+    if (scissorEmpty_) return;
+    VkViewport vp{static_cast<float>(viewport_.x), static_cast<float>(viewport_.y), static_cast<float>(viewport_.w),
+                  static_cast<float>(viewport_.h), depthNear_, depthFar_};
+    vkCmdSetViewport(cmd_, 0, 1, &vp);
+    VkRect2D sc{{scissor_.x, scissor_.y}, {static_cast<std::uint32_t>(scissor_.w), static_cast<std::uint32_t>(scissor_.h)}};
+    vkCmdSetScissor(cmd_, 0, 1, &sc);
+}
+
+DrawUniforms& Renderer::allocUniforms(VkDescriptorSet& set, std::uint32_t& offset) {
+    if (chunk_ < chunks_.size() && chunkOffset_ + uniformStride_ > kDrawsPerChunk * uniformStride_) {
+        ++chunk_;
+        chunkOffset_ = 0;
+    }
+    if (chunk_ == chunks_.size()) {
+        UniformChunk c;
+        c.buffer = ctx_->createHostBuffer(static_cast<VkDeviceSize>(kDrawsPerChunk) * uniformStride_,
+                                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+        VkDescriptorSetLayout layout = pipelines_->uniformSetLayout();
+        VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+        ai.descriptorPool = uniformPool_;
+        ai.descriptorSetCount = 1;
+        ai.pSetLayouts = &layout;
+        check(vkAllocateDescriptorSets(ctx_->device(), &ai, &c.set), "vkAllocateDescriptorSets (uniforms)");
+        VkDescriptorBufferInfo info{c.buffer.buffer, 0, sizeof(DrawUniforms)};
+        VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        w.dstSet = c.set;
+        w.descriptorCount = 1;
+        w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
+        w.pBufferInfo = &info;
+        vkUpdateDescriptorSets(ctx_->device(), 1, &w, 0, nullptr);
+        chunks_.push_back(c);
+        chunkOffset_ = 0;
+    }
+    set = chunks_[chunk_].set;
+    offset = chunkOffset_;
+    chunkOffset_ += uniformStride_;
+    auto* u = reinterpret_cast<DrawUniforms*>(static_cast<char*>(chunks_[chunk_].buffer.mapped) + offset);
+    std::memset(u, 0, sizeof(DrawUniforms));
+    return *u;
+}
+
+void Renderer::bindPipeline(const PipelineKey& key) {
+    if (boundPipeline_ == key.packed()) return;
+    vkCmdBindPipeline(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_->get(key));
+    boundPipeline_ = key.packed();
+}
+
+void Renderer::setDepthState(bool test, bool write, float factor, float units) {
+    // A disabled depth test is ALWAYS, so depth is still written (Nokia, spec §8 item 6).
+    if (!hasDepth_) test = write = false;
+    if (depthTest_ == -1) {
+        vkCmdSetDepthTestEnable(cmd_, VK_TRUE);
+        vkCmdSetDepthBias(cmd_, 0.0f, 0.0f, 0.0f);
+        biasFactor_ = biasUnits_ = 0.0f;
+    }
+    const int t = test ? 1 : 0, w = write ? 1 : 0;
+    if (t != depthTest_) vkCmdSetDepthCompareOp(cmd_, test ? VK_COMPARE_OP_LESS_OR_EQUAL : VK_COMPARE_OP_ALWAYS);
+    depthTest_ = t;
+    if (w != depthWrite_) vkCmdSetDepthWriteEnable(cmd_, write ? VK_TRUE : VK_FALSE);
+    depthWrite_ = w;
+    const int bias = (factor != 0.0f || units != 0.0f) ? 1 : 0;
+    if (bias != biasEnabled_) vkCmdSetDepthBiasEnable(cmd_, bias ? VK_TRUE : VK_FALSE);
+    biasEnabled_ = bias;
+    if (bias && (factor != biasFactor_ || units != biasUnits_)) {
+        vkCmdSetDepthBias(cmd_, units, 0.0f, factor);
+        biasFactor_ = factor;
+        biasUnits_ = units;
+    }
+}
+
+void Renderer::fillFog(DrawUniforms& u, const Appearance* app) const {
+    const Fog* fog = app ? app->getFog().get() : nullptr;
+    if (!fog) return;
+    argb(static_cast<std::uint32_t>(fog->getColor()), u.fogColor, false);
+    u.fogParams[0] = fog->getMode() == Fog::LINEAR ? 1.0f : 2.0f;
+    u.fogParams[1] = fog->getNearDistance();
+    u.fogParams[2] = fog->getFarDistance();
+    u.fogParams[3] = fog->getDensity();
+}
+
+void Renderer::clear(Graphics3D& g3d, const Background* background) {
+    begin(g3d);
+    applyViewport(g3d);
+    if (scissorEmpty_) return;
+    const bool clearColor = !background || background->isColorClearEnabled();
+    const bool clearDepth = (!background || background->isDepthClearEnabled()) && hasDepth_;
+    VkClearRect rect{{{scissor_.x, scissor_.y}, {static_cast<std::uint32_t>(scissor_.w), static_cast<std::uint32_t>(scissor_.h)}}, 0, 1};
+    VkClearAttachment attachments[2]{};
+    std::uint32_t count = 0;
+    if (clearColor) {
+        float c[4] = {0, 0, 0, 0};
+        if (background) argb(static_cast<std::uint32_t>(background->getColor()), c, true);
+        attachments[count].aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
+        attachments[count].colorAttachment = 0;
+        std::memcpy(attachments[count].clearValue.color.float32, c, sizeof(c));
+        ++count;
+    }
+    if (clearDepth) {
+        attachments[count].aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
+        attachments[count].clearValue.depthStencil = {1.0f, 0};
+        ++count;
+    }
+    if (count) vkCmdClearAttachments(cmd_, count, attachments, 1, &rect);
+
+    // The image: the crop rectangle covers the viewport exactly (spec §5.9).
+    Image2D* image = background ? background->getImage().get() : nullptr;
+    if (!clearColor || !image || background->getCropWidth() <= 0 || background->getCropHeight() <= 0) return;
+    const TextureMirror& tex = resources_->texture(*image, false);
+    const bool repeatX = background->getImageModeX() == Background::REPEAT;
+    const bool repeatY = background->getImageModeY() == Background::REPEAT;
+    VkSampler sampler = resources_->sampler(repeatX ? Texture2D::WRAP_REPEAT : Texture2D::WRAP_CLAMP,
+                                            repeatY ? Texture2D::WRAP_REPEAT : Texture2D::WRAP_CLAMP,
+                                            Texture2D::FILTER_NEAREST, Texture2D::FILTER_BASE_LEVEL);
+    VkDescriptorSet textures = resources_->textureSet(&tex, sampler, nullptr, VK_NULL_HANDLE);
+    VkDescriptorSet set;
+    std::uint32_t offset;
+    DrawUniforms& u = allocUniforms(set, offset);
+    const float iw = static_cast<float>(image->getWidth()), ih = static_cast<float>(image->getHeight());
+    const float texRect[4] = {static_cast<float>(background->getCropX()) / iw, static_cast<float>(background->getCropY()) / ih,
+                              static_cast<float>(background->getCropX() + background->getCropWidth()) / iw,
+                              static_cast<float>(background->getCropY() + background->getCropHeight()) / ih};
+    u.texEnv[0][0] = TEX_REPLACE;
+    u.texEnv[0][1] = tex.hasColor;
+    u.texEnv[0][2] = tex.hasAlpha;
+    u.texEnv[0][3] = (repeatX ? 0 : 1) | (repeatY ? 0 : 2);
+    u.defaultColor[0] = u.defaultColor[1] = u.defaultColor[2] = u.defaultColor[3] = 1.0f;
+    u.misc[0] = 1.0f;   // alpha factor
+    u.misc[2] = -1.0f;  // no fixed fog depth
+    const float ndc[4] = {-1.0f, -1.0f, 1.0f, 1.0f};
+    drawQuad(u, set, offset, textures, PipelineKey{0, 0xF, 1}, false, false, ndc, 0.0f, texRect);
+}
+
+void Renderer::drawQuad(DrawUniforms& u, VkDescriptorSet uniformSet, std::uint32_t offset, VkDescriptorSet textures,
+                        const PipelineKey& key, bool depthTest, bool depthWrite, const float r[4], float z,
+                        const float t[4]) {
+    if (quadOffset_ + kQuadBytes > quads_.size) return;  // more than 1024 quads in one frame: dropped
+    identity(u.modelView);
+    toColumns(vulkanProjection(Transform()), u.projection);
+    identity(u.normalMatrix);
+    identity(u.texMatrix[0]);
+    identity(u.texMatrix[1]);
+    u.positionScaleBias[3] = 1.0f;
+    u.texScaleBias[0][3] = u.texScaleBias[1][3] = 1.0f;
+    u.flags[0] |= F_CLIP_SPACE;
+    // Two triangles, counter-clockwise; positions then texcoords per vertex.
+    const float v[6][6] = {
+        {r[0], r[1], z, t[0], t[3], 0}, {r[2], r[1], z, t[2], t[3], 0}, {r[2], r[3], z, t[2], t[1], 0},
+        {r[0], r[1], z, t[0], t[3], 0}, {r[2], r[3], z, t[2], t[1], 0}, {r[0], r[3], z, t[0], t[1], 0},
+    };
+    std::memcpy(static_cast<char*>(quads_.mapped) + quadOffset_, v, sizeof(v));
+    bindPipeline(key);
+    setDepthState(depthTest, depthWrite, 0.0f, 0.0f);
+    if (cull_ != 0) {
+        vkCmdSetCullMode(cmd_, VK_CULL_MODE_NONE);
+        cull_ = 0;
+    }
+    if (frontFace_ == -1) {
+        vkCmdSetFrontFace(cmd_, VK_FRONT_FACE_COUNTER_CLOCKWISE);
+        frontFace_ = 0;
+    }
+    vkCmdBindDescriptorSets(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_->layout(), 0, 1, &uniformSet, 1, &offset);
+    if (boundTextures_ != textures) {
+        vkCmdBindDescriptorSets(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_->layout(), 1, 1, &textures, 0, nullptr);
+        boundTextures_ = textures;
+    }
+    const VkBuffer buffers[5] = {quads_.buffer, dummy_.buffer, dummy_.buffer, quads_.buffer, dummy_.buffer};
+    const VkDeviceSize offsets[5] = {quadOffset_, 0, 0, quadOffset_ + 3 * sizeof(float), 0};
+    const VkDeviceSize strides[5] = {6 * sizeof(float), 0, 0, 6 * sizeof(float), 0};
+    vkCmdBindVertexBuffers2(cmd_, 0, 5, buffers, offsets, nullptr, strides);
+    vkCmdDraw(cmd_, 6, 1, 0, 0);
+    quadOffset_ += kQuadBytes;
+    ++ctx_->draws;
+}
+
+void Renderer::render(Graphics3D& g3d, const detail::RenderQueue& queue) {
+    begin(g3d);
+    applyViewport(g3d);
+    if (scissorEmpty_) return;
+    for (const detail::RenderItem& item : queue.items) {
+        if (item.kind == detail::RenderItem::Kind::Sprite) drawSprite(queue, item);
+        else drawSubmesh(queue, item);
+    }
+}
+
+void Renderer::drawSubmesh(const detail::RenderQueue& queue, const detail::RenderItem& item) {
+    VertexBuffer& vb = *item.vertices;
+    const Appearance* app = item.appearance;
+    const auto* mesh = dynamic_cast<const Mesh*>(item.node);
+    const VertexMirror& vm = resources_->vertices(vb, mesh);
+    const IndexMirror& im = resources_->indices(*item.indices);
+    if (im.count == 0) return;
+    if (item.indices->maxIndex() >= vm.vertexCount)
+        throw IllegalStateException("Graphics3D::render: an IndexBuffer refers to vertex " +
+                                    std::to_string(item.indices->maxIndex()) + " but the VertexBuffer has " +
+                                    std::to_string(vm.vertexCount) + " vertices");
+
+    VkDescriptorSet set;
+    std::uint32_t offset;
+    DrawUniforms& u = allocUniforms(set, offset);
+    toColumns(item.modelView, u.modelView);
+    toColumns(vulkanProjection(queue.projection), u.projection);
+    {
+        glm::mat3 mv;
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) mv[c][r] = item.modelView.at(r, c);
+        const float det = glm::determinant(mv);
+        const glm::mat3 n = det != 0.0f ? glm::transpose(glm::inverse(mv)) : mv;
+        identity(u.normalMatrix);
+        for (int c = 0; c < 3; ++c)
+            for (int r = 0; r < 3; ++r) u.normalMatrix[c * 4 + r] = n[c][r];
+    }
+    if (vm.deformed) {
+        u.positionScaleBias[3] = 1.0f;
+    } else {
+        const auto& b = vb.positionBias();
+        u.positionScaleBias[0] = b[0];
+        u.positionScaleBias[1] = b[1];
+        u.positionScaleBias[2] = b[2];
+        u.positionScaleBias[3] = vb.positionScale();
+    }
+    argb(static_cast<std::uint32_t>(vb.getDefaultColor()), u.defaultColor, true);
+
+    // Texture units: a unit is used when it has both a texture and coordinates.
+    const TextureMirror* tex[2] = {nullptr, nullptr};
+    VkSampler samplers[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
+    const int units = std::min(2, getLimits().numTextureUnits);
+    for (int unit = 0; unit < units; ++unit) {
+        identity(u.texMatrix[unit]);
+        u.texScaleBias[unit][3] = 1.0f;
+        Texture2D* t = app->getTexture(unit).get();
+        if (!t || !vb.texCoords(unit) || !vm.present[3 + unit]) continue;
+        Image2D* image = t->getImage().get();
+        const bool mipmaps = t->getLevelFilter() != Texture2D::FILTER_BASE_LEVEL;
+        tex[unit] = &resources_->texture(*image, mipmaps);
+        samplers[unit] = resources_->sampler(t->getWrappingS(), t->getWrappingT(), t->getImageFilter(), t->getLevelFilter());
+        toColumns(t->compositeTransform(), u.texMatrix[unit]);
+        const auto& b = vb.texCoordBias(unit);
+        u.texScaleBias[unit][0] = b[0];
+        u.texScaleBias[unit][1] = b[1];
+        u.texScaleBias[unit][2] = b[2];
+        u.texScaleBias[unit][3] = vb.texCoordScale(unit);
+        u.texEnv[unit][0] = texFunc(t->getBlending());
+        u.texEnv[unit][1] = tex[unit]->hasColor;
+        u.texEnv[unit][2] = tex[unit]->hasAlpha;
+        argb(static_cast<std::uint32_t>(t->getBlendColor()), u.texBlendColor[unit], false);
+    }
+
+    const PolygonMode* pm = app->getPolygonMode().get();
+    const Material* material = app->getMaterial().get();
+    std::int32_t flags = 0;
+    if (vm.present[1]) flags |= F_HAS_NORMALS;
+    if (vm.present[2]) flags |= F_HAS_COLORS;
+    if (pm && pm->getShading() == PolygonMode::SHADE_FLAT) flags |= F_FLAT;
+    if (material) {
+        flags |= F_LIGHTING;
+        if (material->isVertexColorTrackingEnabled()) flags |= F_COLOR_TRACKING;
+        if (pm && pm->isTwoSidedLightingEnabled()) flags |= F_TWO_SIDED;
+        if (pm && pm->isLocalCameraLightingEnabled()) flags |= F_LOCAL_CAMERA;
+        argb(static_cast<std::uint32_t>(material->getColor(Material::AMBIENT)), u.matAmbient, false);
+        argb(static_cast<std::uint32_t>(material->getColor(Material::DIFFUSE)), u.matDiffuse, true);
+        argb(static_cast<std::uint32_t>(material->getColor(Material::EMISSIVE)), u.matEmissive, false);
+        argb(static_cast<std::uint32_t>(material->getColor(Material::SPECULAR)), u.matSpecular, false);
+        u.matSpecular[3] = material->getShininess();
+        for (int i = 0; i < item.lightCount; ++i) {
+            const detail::RenderLight& l = queue.lights[item.lights[i]];
+            LightUniforms& lu = u.lights[i];
+            std::copy(l.position.begin(), l.position.end(), lu.position);
+            lu.color[0] = l.color[0];
+            lu.color[1] = l.color[1];
+            lu.color[2] = l.color[2];
+            lu.color[3] = static_cast<float>(l.mode - Light::AMBIENT);
+            lu.spot[0] = l.spotDirection[0];
+            lu.spot[1] = l.spotDirection[1];
+            lu.spot[2] = l.spotDirection[2];
+            lu.spot[3] = l.spotCosCutoff;
+            lu.attenuation[0] = l.attenuation[0];
+            lu.attenuation[1] = l.attenuation[1];
+            lu.attenuation[2] = l.attenuation[2];
+            lu.attenuation[3] = l.spotExponent;
+        }
+        u.flags[1] = item.lightCount;
+    }
+    u.flags[0] = flags;
+    fillFog(u, app);
+    const CompositingMode* cm = app->getCompositingMode().get();
+    u.misc[0] = item.alphaFactor;
+    u.misc[1] = cm ? cm->getAlphaThreshold() : 0.0f;
+    u.misc[2] = -1.0f;
+
+    PipelineKey key;
+    key.blend = blendIndex(cm);
+    key.writeMask = static_cast<std::uint8_t>(
+        ((!cm || cm->isColorWriteEnabled()) ? (VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT) : 0) |
+        ((!cm || cm->isAlphaWriteEnabled()) ? VK_COLOR_COMPONENT_A_BIT : 0));
+    key.samples = 1;
+    bindPipeline(key);
+    setDepthState(!cm || cm->isDepthTestEnabled(), !cm || cm->isDepthWriteEnabled(), cm ? cm->getDepthOffsetFactor() : 0.0f,
+                  cm ? cm->getDepthOffsetUnits() : 0.0f);
+    const int culling = pm ? pm->getCulling() : PolygonMode::CULL_BACK;
+    const int cull = culling == PolygonMode::CULL_NONE ? 0 : culling == PolygonMode::CULL_FRONT ? 1 : 2;
+    if (cull != cull_) {
+        vkCmdSetCullMode(cmd_, cull == 0 ? VK_CULL_MODE_NONE : cull == 1 ? VK_CULL_MODE_FRONT_BIT : VK_CULL_MODE_BACK_BIT);
+        cull_ = cull;
+    }
+    // The y flip in the projection keeps on-screen orientation, so CCW stays CCW.
+    const int front = (pm && pm->getWinding() == PolygonMode::WINDING_CW) ? 1 : 0;
+    if (front != frontFace_) {
+        vkCmdSetFrontFace(cmd_, front ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE);
+        frontFace_ = front;
+    }
+    vkCmdBindDescriptorSets(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_->layout(), 0, 1, &set, 1, &offset);
+    VkDescriptorSet textures = resources_->textureSet(tex[0], samplers[0], tex[1], samplers[1]);
+    if (textures != boundTextures_) {
+        vkCmdBindDescriptorSets(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_->layout(), 1, 1, &textures, 0, nullptr);
+        boundTextures_ = textures;
+    }
+    static constexpr VkDeviceSize kStrides[5] = {12, 12, 16, 12, 12};
+    VkBuffer buffers[5];
+    VkDeviceSize offsets[5], strides[5];
+    for (int i = 0; i < 5; ++i) {
+        buffers[i] = vm.present[i] ? vm.buffer.buffer : dummy_.buffer;
+        offsets[i] = vm.present[i] ? vm.offsets[i] : 0;
+        strides[i] = vm.present[i] ? kStrides[i] : 0;
+    }
+    vkCmdBindVertexBuffers2(cmd_, 0, 5, buffers, offsets, nullptr, strides);
+    vkCmdBindIndexBuffer(cmd_, im.buffer.buffer, 0, VK_INDEX_TYPE_UINT32);
+    vkCmdDrawIndexed(cmd_, im.count, 1, 0, 0, 0);
+    ++ctx_->draws;
+}
+
+void Renderer::drawSprite(const detail::RenderQueue&, const detail::RenderItem&) {
+    // Sprites arrive with the sprite projection (scene/SpriteProjection).
+}
+
+void Renderer::release(Graphics3D& g3d) {
+    if (!recording_) return;
+    recording_ = false;
+    vkCmdEndRendering(cmd_);
+    barrier(cmd_, color_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+            VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    copy.imageExtent = {width_, height_, 1};
+    vkCmdCopyImageToBuffer(cmd_, color_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, transfer_.buffer, 1, &copy);
+    VkMemoryBarrier2 hostRead{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+    hostRead.srcStageMask = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
+    hostRead.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+    hostRead.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+    hostRead.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dep.memoryBarrierCount = 1;
+    dep.pMemoryBarriers = &hostRead;
+    vkCmdPipelineBarrier2(cmd_, &dep);
+    check(vkEndCommandBuffer(cmd_), "vkEndCommandBuffer");
+    vkResetFences(ctx_->device(), 1, &fence_);
+    ctx_->submit(cmd_, fence_);
+    check(vkWaitForFences(ctx_->device(), 1, &fence_, VK_TRUE, UINT64_MAX), "vkWaitForFences (frame)");
+    ++ctx_->frames;
+    resources_->endFrame();
+
+    const auto* src = static_cast<const std::uint8_t*>(transfer_.mapped);
+    const std::size_t n = static_cast<std::size_t>(width_) * height_;
+    if (Image2D* image = g3d.targetImage()) {
+        if (image->getFormat() == Image2D::RGBA) {
+            image->set(0, 0, static_cast<int>(width_), static_cast<int>(height_), {src, n * 4});
+        } else {
+            std::vector<std::uint8_t> rgb(n * 3);
+            for (std::size_t i = 0; i < n; ++i)
+                for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = src[i * 4 + c];
+            image->set(0, 0, static_cast<int>(width_), static_cast<int>(height_), rgb);
+        }
+    } else if (Graphics* graphics = g3d.targetGraphics()) {
+        auto px = graphics->pixels();
+        for (std::size_t i = 0; i < std::min(n, px.size()); ++i)
+            px[i] = 0xFF000000u | (static_cast<std::uint32_t>(src[i * 4]) << 16) |
+                    (static_cast<std::uint32_t>(src[i * 4 + 1]) << 8) | src[i * 4 + 2];
+    }
+}
+
+}  // namespace m3g::vk

@@ -1,0 +1,95 @@
+// The Vulkan implementation of Graphics3D's drawing (detail::RenderBackend):
+// one command buffer per bound target, opened at the first clear/render and
+// submitted at releaseTarget, when the pixels are read back into the bound
+// Image2D or Graphics surface.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "Context.h"
+#include "DrawUniforms.h"
+#include "Pipelines.h"
+#include "RenderBackend.h"
+#include "ResourceCache.h"
+
+namespace m3g {
+class Appearance;
+class Image2D;
+}
+
+namespace m3g::detail {
+struct RenderItem;
+}
+
+namespace m3g::vk {
+
+class Renderer final : public detail::RenderBackend {
+public:
+    Renderer();
+    ~Renderer() override;
+
+    void clear(Graphics3D& g3d, const Background* background) override;
+    void render(Graphics3D& g3d, const detail::RenderQueue& queue) override;
+    void release(Graphics3D& g3d) override;
+
+private:
+    struct Rect {
+        int x = 0, y = 0, w = 0, h = 0;
+    };
+    struct UniformChunk {
+        Buffer buffer;
+        VkDescriptorSet set = VK_NULL_HANDLE;
+    };
+
+    void begin(Graphics3D& g3d);
+    void ensureTargetImages(std::uint32_t width, std::uint32_t height);
+    void applyViewport(Graphics3D& g3d);
+    DrawUniforms& allocUniforms(VkDescriptorSet& set, std::uint32_t& offset);
+    void drawSubmesh(const detail::RenderQueue& queue, const detail::RenderItem& item);
+    void drawSprite(const detail::RenderQueue& queue, const detail::RenderItem& item);
+    /// A textured rectangle in NDC: corners (x0,y0)-(x1,y1), texture coordinates
+    /// (s0,t0) at (x0,y1) (top-left) and (s1,t1) at (x1,y0).
+    void drawQuad(DrawUniforms& u, VkDescriptorSet uniformSet, std::uint32_t offset, VkDescriptorSet textures,
+                  const PipelineKey& key, bool depthTest, bool depthWrite, const float rect[4], float z,
+                  const float tex[4]);
+    void bindPipeline(const PipelineKey& key);
+    void setDepthState(bool test, bool write, float factor, float units);
+    void fillFog(DrawUniforms& u, const Appearance* app) const;
+
+    std::shared_ptr<Context> ctx_;
+    std::unique_ptr<Pipelines> pipelines_;
+    std::unique_ptr<ResourceCache> resources_;
+
+    // The bound target's images and the frame being recorded.
+    Image color_, depth_;
+    std::uint32_t width_ = 0, height_ = 0;
+    VkCommandBuffer cmd_ = VK_NULL_HANDLE;
+    VkFence fence_ = VK_NULL_HANDLE;
+    bool recording_ = false;
+    bool hasDepth_ = true;
+    Buffer transfer_;  // upload of the target's pixels and read-back
+    Rect viewport_, scissor_;
+    bool scissorEmpty_ = false;
+    float depthNear_ = 0.0f, depthFar_ = 1.0f;
+
+    // Per-frame streaming data.
+    std::vector<UniformChunk> chunks_;
+    std::size_t chunk_ = 0;
+    std::uint32_t chunkOffset_ = 0;
+    std::uint32_t uniformStride_ = 0;
+    VkDescriptorPool uniformPool_ = VK_NULL_HANDLE;
+    Buffer quads_;
+    VkDeviceSize quadOffset_ = 0;
+    Buffer dummy_;
+
+    // State last set on cmd_, to skip redundant commands.
+    std::uint32_t boundPipeline_ = ~0u;
+    int cull_ = -1, frontFace_ = -1, depthTest_ = -1, depthWrite_ = -1;
+    float biasFactor_ = 0.0f, biasUnits_ = 0.0f;
+    int biasEnabled_ = -1;
+    VkDescriptorSet boundTextures_ = VK_NULL_HANDLE;
+    std::vector<float> pixelsScratch_;
+};
+
+}  // namespace m3g::vk

@@ -1,0 +1,72 @@
+// m3g-vk's Vulkan back end as seen from an application: which device it
+// uses, its validation counters and statistics. Graphics3D creates the
+// device on its first clear() or render(); nothing here is needed to draw.
+//
+// Environment variables (read when the device is created):
+//   M3G_VK_DEVICE      index (as listed by `m3g info --devices`) or a
+//                      case-insensitive substring of the device name;
+//                      default: the first discrete GPU, else integrated,
+//                      else virtual, else a CPU device (lavapipe).
+//   M3G_VK_VALIDATION  1 = enable VK_LAYER_KHRONOS_validation, 0 = disable;
+//                      default: on in Debug builds, off otherwise.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <m3g/Exception.h>
+
+namespace m3g::vk {
+
+/// Thrown when Vulkan cannot be used at all (no loader, no ICD, no device,
+/// device creation failed) or a Vulkan call fails. The message says what
+/// failed and what to install.
+class VulkanError : public IllegalStateException {
+public:
+    using IllegalStateException::IllegalStateException;
+};
+
+struct DeviceInfo {
+    std::string name;
+    std::string type;         ///< "discrete", "integrated", "virtual", "cpu", "other"
+    std::uint32_t apiVersion = 0;
+    std::uint32_t vendorID = 0;
+    std::uint32_t deviceID = 0;
+};
+
+/// Every physical device the loader reports (creates a bare instance;
+/// throws VulkanError when there is no loader).
+std::vector<DeviceInfo> listDevices();
+
+/// The device Graphics3D renders with (creates it if needed).
+DeviceInfo currentDevice();
+
+/// Turns the validation layer on or off; only before the device exists
+/// (overrides M3G_VK_VALIDATION). Returns false if too late.
+bool requestValidation(bool enable);
+/// Instance extensions a windowed application needs (e.g. from
+/// glfwGetRequiredInstanceExtensions); enables VK_KHR_swapchain on the
+/// device. Only before the device exists; returns false if too late.
+bool requestWindowExtensions(const std::vector<std::string>& instanceExtensions);
+/// Whether the device was created with the validation layer.
+bool validationEnabled();
+/// Messages (warnings and errors) the validation layer has reported so far.
+std::uint64_t validationMessageCount();
+/// The last validation message, or "" (for test failure output).
+std::string lastValidationMessage();
+
+/// Counters since the device was created.
+struct RenderStats {
+    std::uint64_t pipelinesCreated = 0;
+    std::uint64_t draws = 0;
+    std::uint64_t bufferUploads = 0;
+    std::uint64_t textureUploads = 0;
+    std::uint64_t frames = 0;       ///< releaseTarget calls that flushed work
+    std::uint64_t liveBuffers = 0;  ///< GPU mirrors of buffers alive now
+    std::uint64_t liveTextures = 0; ///< GPU mirrors of images alive now
+    std::uint64_t deviceMemoryBytes = 0;  ///< bytes allocated now
+};
+RenderStats renderStats();
+
+}  // namespace m3g::vk

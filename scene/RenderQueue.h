@@ -1,0 +1,81 @@
+// The collect step (architecture guide §1): from a World, a node or an
+// immediate-mode submesh to a sorted list of draws, as plain data with no
+// Vulkan in it. Spec digest §5.3 (traversal, scope, lights, order).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <m3g/Transform.h>
+
+namespace m3g {
+class Appearance;
+class Camera;
+class IndexBuffer;
+class Light;
+class Mesh;
+class Node;
+class Sprite3D;
+class VertexBuffer;
+}  // namespace m3g
+
+namespace m3g::detail {
+
+/// A light in eye space, ready for the shader (spec §5.5).
+struct RenderLight {
+    int mode = 0;                          ///< Light::AMBIENT ... SPOT
+    std::array<float, 3> color{};          ///< intensity x colour
+    std::array<float, 4> position{};       ///< eye space; w = 0: direction towards the light
+    std::array<float, 3> spotDirection{};  ///< unit, eye space
+    float spotCosCutoff = -1.0f;
+    std::array<float, 3> attenuation{1.0f, 0.0f, 0.0f};
+    float spotExponent = 0.0f;
+    int scope = -1;
+};
+
+struct RenderItem {
+    enum class Kind : std::uint8_t { Submesh, Sprite };
+    Kind kind = Kind::Submesh;
+    const Node* node = nullptr;  ///< the Mesh or Sprite3D; null in immediate mode
+    VertexBuffer* vertices = nullptr;
+    IndexBuffer* indices = nullptr;
+    Appearance* appearance = nullptr;
+    int submesh = 0;
+    Transform modelView;         ///< node -> eye
+    float alphaFactor = 1.0f;    ///< product over the path (spec §4.3)
+    std::array<std::uint8_t, 8> lights{};  ///< indices into RenderQueue::lights
+    int lightCount = 0;
+    std::uint64_t sortKey = 0;   ///< layer, then opaque before blended, then order
+};
+
+struct RenderQueue {
+    Transform projection;        ///< the camera's (OpenGL conventions)
+    int cameraScope = -1;
+    int maxLights = 8;
+    std::vector<RenderLight> lights;
+    std::vector<RenderItem> items;
+
+    void reset(const Camera& camera, int maxLightsPerDraw);
+    /// Adds a light given its light -> eye transform.
+    void addLight(const Light& light, const Transform& lightToEye);
+    /// Adds every rendering-enabled Light under `root` (root's own
+    /// transform included in rootToEye). Spec §5.3.
+    void collectLights(const Node& root, const Transform& rootToEye);
+    /// Adds the draws of `node` and its descendants; `nodeToEye` already
+    /// includes node's own transform (or not, for render(Node, Transform)).
+    /// Honours rendering enable, scope against the camera, alpha factors.
+    void collectNode(const Node& node, const Transform& nodeToEye, float alphaFactor = 1.0f);
+    /// An immediate-mode submesh (render(VertexBuffer, IndexBuffer, ...)).
+    void addSubmesh(VertexBuffer* vb, IndexBuffer* ib, Appearance* app, const Transform& modelView, int scope,
+                    const Node* node = nullptr, int submesh = 0, float alphaFactor = 1.0f);
+    /// Orders items: layer ascending, then opaque before blended, then
+    /// collection order (stable). Spec §5.3.
+    void sort();
+
+private:
+    void selectLights(RenderItem& item, int scope) const;
+    std::uint32_t order_ = 0;
+};
+
+}  // namespace m3g::detail

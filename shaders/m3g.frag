@@ -1,0 +1,64 @@
+#version 450
+// Fragment stage of the fixed-function emulation: texture environment per
+// unit (spec digest §5.7 table), fog (§5.6), alpha test (§5.8).
+#extension GL_GOOGLE_include_directive : require
+#include "draw_uniforms.glsl"
+
+layout(set = 1, binding = 0) uniform sampler2D textures[2];
+
+layout(location = 0) in vec4 inFront;
+layout(location = 1) in vec4 inBack;
+layout(location = 2) flat in vec4 inFlatFront;
+layout(location = 3) flat in vec4 inFlatBack;
+layout(location = 4) in vec4 inTex0;
+layout(location = 5) in vec4 inTex1;
+layout(location = 6) in float inFogDepth;
+
+layout(location = 0) out vec4 outColor;
+
+vec4 applyUnit(vec4 cf, int unit, vec4 tc) {
+    ivec4 env = u.texEnv[unit];
+    vec2 st = tc.xy / tc.w;
+    if (((env.w & 1) != 0 && (st.x < 0.0 || st.x > 1.0)) || ((env.w & 2) != 0 && (st.y < 0.0 || st.y > 1.0)))
+        discard;
+    vec4 t = texture(textures[unit], st);
+    bool hasColor = env.y != 0;
+    bool hasAlpha = env.z != 0;
+    vec3 c = cf.rgb;
+    float a = cf.a;
+    if (env.x == 1) {  // REPLACE
+        if (hasColor) c = t.rgb;
+        if (hasAlpha) a = t.a;
+    } else if (env.x == 2) {  // MODULATE (texels were expanded with 1 for missing channels)
+        c = cf.rgb * t.rgb;
+        a = cf.a * t.a;
+    } else if (env.x == 3) {  // DECAL (RGB: C_t; RGBA: mix by A_t)
+        c = hasAlpha ? mix(cf.rgb, t.rgb, t.a) : t.rgb;
+    } else if (env.x == 4) {  // BLEND
+        if (hasColor) c = mix(cf.rgb, u.texBlendColor[unit].rgb, t.rgb);
+        a = cf.a * t.a;
+    } else if (env.x == 5) {  // ADD
+        if (hasColor) c = clamp(cf.rgb + t.rgb, 0.0, 1.0);
+        a = cf.a * t.a;
+    }
+    return vec4(c, a);
+}
+
+void main() {
+    bool flatShade = (u.flags.x & F_FLAT) != 0;
+    vec4 color = gl_FrontFacing ? (flatShade ? inFlatFront : inFront) : (flatShade ? inFlatBack : inBack);
+    if (u.texEnv[0].x != 0) color = applyUnit(color, 0, inTex0);
+    if (u.texEnv[1].x != 0) color = applyUnit(color, 1, inTex1);
+
+    // Alpha test: pass if A >= threshold (off at 0).
+    if (u.misc.y > 0.0 && color.a < u.misc.y) discard;
+
+    int fogMode = int(u.fogParams.x);
+    if (fogMode != 0) {
+        float z = inFogDepth;
+        float f = fogMode == 1 ? (u.fogParams.z - z) / (u.fogParams.z - u.fogParams.y) : exp(-u.fogParams.w * z);
+        f = clamp(f, 0.0, 1.0);
+        color.rgb = mix(u.fogColor.rgb, color.rgb, f);
+    }
+    outColor = color;
+}

@@ -1,0 +1,101 @@
+#version 450
+// Vertex stage of the OpenGL ES 1.1 fixed-function emulation: transform,
+// per-vertex lighting (spec digest §5.5), texture coordinate pipeline (§5.7).
+#extension GL_GOOGLE_include_directive : require
+#include "draw_uniforms.glsl"
+
+layout(location = 0) in vec3 inPosition;  // raw values: scale and bias applied here
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec4 inColor;
+layout(location = 3) in vec3 inTex0;      // raw (s, t, r); r = 0 for 2-component arrays
+layout(location = 4) in vec3 inTex1;
+
+layout(location = 0) out vec4 outFront;
+layout(location = 1) out vec4 outBack;
+layout(location = 2) flat out vec4 outFlatFront;
+layout(location = 3) flat out vec4 outFlatBack;
+layout(location = 4) out vec4 outTex0;    // (s, t, r, q) after the texture matrix
+layout(location = 5) out vec4 outTex1;
+layout(location = 6) out float outFogDepth;
+
+bool has(int bit) { return (u.flags.x & bit) != 0; }
+
+vec4 lightVertex(vec3 eyePos, vec3 n, vec4 ambient, vec4 diffuse) {
+    vec3 color = u.matEmissive.rgb;
+    for (int i = 0; i < u.flags.y; ++i) {
+        Light l = u.lights[i];
+        int mode = int(l.color.a);
+        if (mode == 0) {  // ambient
+            color += l.color.rgb * ambient.rgb;
+            continue;
+        }
+        vec3 L;
+        float att = 1.0;
+        if (mode == 1) {
+            L = l.position.xyz;
+        } else {
+            vec3 d = l.position.xyz - eyePos;
+            float dist = length(d);
+            L = dist > 0.0 ? d / dist : vec3(0.0, 0.0, 1.0);
+            att = 1.0 / max(l.attenuation.x + l.attenuation.y * dist + l.attenuation.z * dist * dist, 1e-30);
+            if (mode == 3) {
+                float c = dot(-L, l.spot.xyz);
+                att *= c < l.spot.w ? 0.0 : pow(max(c, 0.0), l.attenuation.w);
+            }
+        }
+        float nDotL = dot(n, L);
+        vec3 contribution = max(nDotL, 0.0) * l.color.rgb * diffuse.rgb;
+        if (nDotL > 0.0) {
+            vec3 eyeDir = has(F_LOCAL_CAMERA) ? normalize(-eyePos) : vec3(0.0, 0.0, 1.0);
+            vec3 h = normalize(L + eyeDir);
+            float nDotH = max(dot(n, h), 0.0);
+            float s = u.matSpecular.w > 0.0 ? pow(nDotH, u.matSpecular.w) : 1.0;
+            contribution += s * l.color.rgb * u.matSpecular.rgb;
+        }
+        color += att * contribution;
+    }
+    return vec4(clamp(color, 0.0, 1.0), clamp(diffuse.a, 0.0, 1.0));
+}
+
+vec4 texCoord(vec3 raw, int unit) {
+    vec4 st = vec4(raw * u.texScaleBias[unit].w + u.texScaleBias[unit].xyz, 1.0);
+    return u.texMatrix[unit] * st;
+}
+
+void main() {
+    vec4 eye;
+    if (has(F_CLIP_SPACE)) {
+        eye = vec4(inPosition, 1.0);
+        gl_Position = u.projection * eye;
+    } else {
+        vec3 p = inPosition * u.positionScaleBias.w + u.positionScaleBias.xyz;
+        eye = u.modelView * vec4(p, 1.0);
+        gl_Position = u.projection * eye;
+    }
+    vec4 vertexColor = has(F_HAS_COLORS) ? inColor : u.defaultColor;
+
+    vec4 front, back;
+    if (has(F_LIGHTING)) {
+        vec3 eyePos = eye.xyz / eye.w;
+        vec3 n = has(F_HAS_NORMALS) ? inNormal : vec3(0.0, 0.0, 1.0);
+        n = mat3(u.normalMatrix) * n;
+        float len = length(n);
+        n = len > 0.0 ? n / len : n;  // GL_NORMALIZE
+        bool track = has(F_COLOR_TRACKING);
+        vec4 ambient = track ? vertexColor : u.matAmbient;
+        vec4 diffuse = track ? vertexColor : u.matDiffuse;
+        front = lightVertex(eyePos, n, ambient, diffuse);
+        back = has(F_TWO_SIDED) ? lightVertex(eyePos, -n, ambient, diffuse) : front;
+    } else {
+        front = back = clamp(vertexColor, 0.0, 1.0);
+    }
+    front.a *= u.misc.x;
+    back.a *= u.misc.x;
+    outFront = front;
+    outBack = back;
+    outFlatFront = front;
+    outFlatBack = back;
+    outTex0 = u.texEnv[0].x != 0 ? texCoord(inTex0, 0) : vec4(0.0, 0.0, 0.0, 1.0);
+    outTex1 = u.texEnv[1].x != 0 ? texCoord(inTex1, 1) : vec4(0.0, 0.0, 0.0, 1.0);
+    outFogDepth = u.misc.z >= 0.0 ? u.misc.z : abs(eye.z / eye.w);
+}
