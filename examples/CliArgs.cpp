@@ -56,6 +56,12 @@ std::string usageText() {
            "            --json dumps every object's properties, --time T animates to T ms first\n"
            "  convert IN OUT [--compress] [--lenient]\n"
            "            load IN and save it as OUT (zlib sections with --compress)\n"
+           "  render FILE -o OUT.png [--size WxH] [--time MS] [--align] [--lenient]\n"
+           "            render the World to a PNG (auto-framed when it has no active camera);\n"
+           "            -o - writes the PNG to stdout\n"
+           "  compare A.png B.png [--threshold 8] [--max-share 0.01] [--min-psnr DB] [--diff OUT.png]\n"
+           "            share of pixels whose largest channel difference exceeds the threshold,\n"
+           "            and PSNR; exit status 0 when within the limits\n"
            "  version   print the library version\n"
            "  help      print this text\n";
 }

@@ -5,11 +5,18 @@
 //                                 --json dumps every object's getter values
 //   m3g convert IN OUT [--compress] [--lenient]
 //                                 load and re-save as M3G 1.0
+//   m3g render FILE -o OUT.png [--size WxH] [--time MS] [--align] [--lenient]
+//                                 render the World (auto-framed if it has no
+//                                 camera) to a PNG; -o - writes to stdout
+//   m3g compare A.png B.png [--threshold N] [--max-share S] [--min-psnr DB] [--diff OUT.png]
+//                                 share of pixels off by more than N, PSNR;
+//                                 exit status 0 = within the limits
 //   m3g version
 // Exit status: 0 success, 1 load/save failure (the IOException message on
 // stderr), 2 bad command line.
 #include <cstdio>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <variant>
 #include <vector>
@@ -17,6 +24,7 @@
 #include <m3g/m3g.h>
 
 #include "CliArgs.h"
+#include "Commands.h"
 #include "ObjectDump.h"
 
 namespace {
@@ -99,6 +107,13 @@ int convert(const m3gcli::CliArgs& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Subcommands with their own option parsing.
+    if (argc >= 2) {
+        const std::string_view command = argv[1];
+        std::vector<std::string_view> rest(argv + 2, argv + argc);
+        if (command == "render") return m3gcli::cmdRender(rest);
+        if (command == "compare") return m3gcli::cmdCompare(rest);
+    }
     m3gcli::CliArgs args;
     try {
         args = m3gcli::parseCliArgs(argc, argv);

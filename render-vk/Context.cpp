@@ -194,6 +194,20 @@ std::shared_ptr<Context> Context::shared() {
     if (!gContext) {
         gContext.reset(new Context());
         gExists = true;
+        // Destroy the device before the driver's and layers' static
+        // destructors (registered before this handler, so they run after it).
+        static const bool registered = [] {
+            std::atexit([] {
+                std::shared_ptr<Context> last;
+                {
+                    std::lock_guard inner(gContextMutex);
+                    last.swap(gContext);
+                    gExists = false;
+                }
+            });
+            return true;
+        }();
+        (void)registered;
     }
     return gContext;
 }

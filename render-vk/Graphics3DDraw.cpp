@@ -1,5 +1,7 @@
 // Graphics3D's clear() and render() (spec digest §4.26, §5.3): the checks,
 // the collect step (scene/RenderQueue) and the hand-over to the renderer.
+#include <cstdlib>
+
 #include <m3g/Appearance.h>
 #include <m3g/Background.h>
 #include <m3g/Graphics3D.h>
@@ -38,7 +40,16 @@ void collectWorldLights(const Node& node, const Transform& toWorld, std::vector<
 }  // namespace
 
 detail::RenderBackend& Graphics3D::backend() {
-    if (!backend_) backend_ = std::make_unique<vk::Renderer>();
+    if (!backend_) {
+        backend_ = std::make_unique<vk::Renderer>();
+        // Free GPU state before the driver's and the validation layer's own
+        // static destructors run (they were set up before this handler).
+        static const bool registered = [] {
+            std::atexit([] { Graphics3D::getInstance()->releaseRenderer(); });
+            return true;
+        }();
+        (void)registered;
+    }
     return *backend_;
 }
 

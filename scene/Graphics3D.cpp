@@ -108,6 +108,15 @@ void Graphics3D::releaseTarget() {
     if (backend_) backend_->release(*this);
 }
 
+void Graphics3D::releaseRenderer() noexcept {
+    try {
+        releaseTarget();
+    } catch (...) {
+        // The renderer goes anyway.
+    }
+    backend_.reset();
+}
+
 void Graphics3D::setViewport(int x, int y, int width, int height) {
     const Limits& l = getLimits();
     detail::requireRange(width, 1, l.maxViewportWidth, "Graphics3D::setViewport", "width");

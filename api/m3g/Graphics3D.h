@@ -121,6 +121,9 @@ public:
     Ref<Light> getLight(int index, Transform* transform) const;
 
     // ---- Engine interface ----
+    /// Frees the renderer and its GPU resources (after finishing the work of
+    /// a bound target); the next clear or render creates a new one.
+    void releaseRenderer() noexcept;
     struct LightEntry {
         Ref<Light> light;
         Transform toWorld;

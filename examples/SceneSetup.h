@@ -1,0 +1,39 @@
+// Turning a loaded file into a renderable World exactly as the reference
+// renders were made (../shared/corpus/REFERENCE.md): the first World, or a
+// new one holding the root nodes; auto-framing when there is no active
+// camera; the camera fix-up when the active camera is outside the World.
+// Shared by `m3g render`, the viewer and the agreement test.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include <m3g/m3g.h>
+
+namespace m3gcli {
+
+struct PreparedScene {
+    m3g::Ref<m3g::World> world;
+    bool createdWorld = false;     ///< no World in the file: one made of the root nodes
+    bool autoFramed = false;       ///< camera (and maybe lights, background) added
+    bool cameraFixup = false;      ///< the active camera was added to the World
+    bool lightsAdded = false;
+    bool backgroundAdded = false;
+    std::array<float, 3> center{}; ///< auto-framing bounds (valid when autoFramed)
+    float radius = 0.0f;
+    std::vector<std::string> notes;  ///< what was done, for stderr
+};
+
+/// Builds the World for `loaded` at a target of width x height pixels.
+PreparedScene prepareScene(const m3g::LoadResult& loaded, int width, int height);
+
+/// Bounding box rule of REFERENCE.md step 2 (stored transforms, rest poses):
+/// centre and radius; no vertex gives (0,0,0) and 1.
+void sceneBounds(m3g::World& world, std::array<float, 3>& center, float& radius);
+
+/// True if some Light in `world` can contribute (enabled path, colour and
+/// intensity non-zero).
+bool hasContributingLight(const m3g::World& world);
+
+}  // namespace m3gcli
