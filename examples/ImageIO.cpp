@@ -8,7 +8,24 @@
 
 #include <png.h>
 
+#include <m3g/Graphics.h>
+
 namespace m3gcli {
+
+RgbaImage fromGraphics(const m3g::Graphics& graphics) {
+    RgbaImage out;
+    out.width = graphics.getWidth();
+    out.height = graphics.getHeight();
+    const auto px = graphics.pixels();
+    out.pixels.resize(px.size() * 4);
+    for (std::size_t i = 0; i < px.size(); ++i) {
+        out.pixels[i * 4] = static_cast<std::uint8_t>(px[i] >> 16);
+        out.pixels[i * 4 + 1] = static_cast<std::uint8_t>(px[i] >> 8);
+        out.pixels[i * 4 + 2] = static_cast<std::uint8_t>(px[i]);
+        out.pixels[i * 4 + 3] = static_cast<std::uint8_t>(px[i] >> 24);
+    }
+    return out;
+}
 
 RgbaImage readPng(const std::string& path) {
     png_image img{};

@@ -7,6 +7,10 @@
 #include <string>
 #include <vector>
 
+namespace m3g {
+class Graphics;
+}
+
 namespace m3gcli {
 
 /// 8-bit RGBA pixels, rows top to bottom.
@@ -14,6 +18,9 @@ struct RgbaImage {
     int width = 0, height = 0;
     std::vector<std::uint8_t> pixels;
 };
+
+/// The pixels of an lcdui-style Graphics surface (ARGB ints) as RGBA8.
+RgbaImage fromGraphics(const m3g::Graphics& graphics);
 
 /// Reads any PNG as RGBA8. Throws std::runtime_error naming the file.
 RgbaImage readPng(const std::string& path);

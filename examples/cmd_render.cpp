@@ -79,7 +79,9 @@ int cmdRender(std::span<const std::string_view> argv) {
         scene.world->animate(args.time);
         if (args.align) scene.world->align(nullptr);
 
-        m3g::Ref<m3g::Image2D> target(new m3g::Image2D(m3g::Image2D::RGBA, args.width, args.height));
+        // A Graphics surface, as a MIDlet renders (and as the reference images
+        // were made): background images must then be RGB.
+        m3g::Ref<m3g::Graphics> target(new m3g::Graphics(args.width, args.height));
         m3g::Graphics3D* g = m3g::Graphics3D::getInstance();
         g->bindTarget(target.get(), true, 0);
         try {
@@ -90,11 +92,7 @@ int cmdRender(std::span<const std::string_view> argv) {
             throw;
         }
         g->releaseTarget();
-        RgbaImage out;
-        out.width = args.width;
-        out.height = args.height;
-        target->getPixelsRGBA8(out.pixels);
-        writePng(args.output, out, false);
+        writePng(args.output, fromGraphics(*target), false);
         if (args.output != "-") std::fprintf(stderr, "m3g: wrote %s (%dx%d, t = %d ms)\n", args.output.c_str(), args.width, args.height, args.time);
         return 0;
     } catch (const m3g::vk::VulkanError& e) {
