@@ -62,6 +62,8 @@ std::string usageText() {
            "  compare A.png B.png [--threshold 8] [--max-share 0.01] [--min-psnr DB] [--diff OUT.png]\n"
            "            share of pixels whose largest channel difference exceeds the threshold,\n"
            "            and PSNR; exit status 0 when within the limits\n"
+           "  sample -o OUT.m3g\n"
+           "            write the project's sample scene (built in code) with the writer\n"
            "  version   print the library version\n"
            "  help      print this text\n";
 }

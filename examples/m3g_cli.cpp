@@ -11,6 +11,7 @@
 //   m3g compare A.png B.png [--threshold N] [--max-share S] [--min-psnr DB] [--diff OUT.png]
 //                                 share of pixels off by more than N, PSNR;
 //                                 exit status 0 = within the limits
+//   m3g sample -o OUT.m3g         write the project's sample scene
 //   m3g version
 // Exit status: 0 success, 1 load/save failure (the IOException message on
 // stderr), 2 bad command line.
@@ -113,6 +114,7 @@ int main(int argc, char** argv) {
         std::vector<std::string_view> rest(argv + 2, argv + argc);
         if (command == "render") return m3gcli::cmdRender(rest);
         if (command == "compare") return m3gcli::cmdCompare(rest);
+        if (command == "sample") return m3gcli::cmdSample(rest);
     }
     m3gcli::CliArgs args;
     try {
