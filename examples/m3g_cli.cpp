@@ -11,6 +11,8 @@
 //   m3g compare A.png B.png [--threshold N] [--max-share S] [--min-psnr DB] [--diff OUT.png]
 //                                 share of pixels off by more than N, PSNR;
 //                                 exit status 0 = within the limits
+//   m3g pick FILE X Y [--time T] [--json] [--lenient]
+//                                 pick through the World's active camera
 //   m3g version
 // Exit status: 0 success, 1 load/save failure (the IOException message on
 // stderr), 2 bad command line.
@@ -26,6 +28,7 @@
 #include "CliArgs.h"
 #include "Commands.h"
 #include "ObjectDump.h"
+#include "cmd_pick.h"
 
 namespace {
 
@@ -132,6 +135,7 @@ int main(int argc, char** argv) {
         }
         if (args.command == "info") return args.files.empty() ? libraryInfo() : fileInfo(args);
         if (args.command == "convert") return convert(args);
+        if (args.command == "pick") return m3gcli::runPick(args);
     } catch (const m3g::Exception& e) {
         std::fprintf(stderr, "m3g: %s\n", e.what());
         return 1;
