@@ -164,6 +164,8 @@ void Picker::intersectMesh(Mesh& mesh, const glm::mat4& toGroup) {
         deformed_ = deformer_.update(mesh);
     } catch (const IllegalStateException& e) {
         throw IllegalStateException(detail::str(kWhere, ": ", e.what()));
+    } catch (const ArithmeticException& e) {
+        throw ArithmeticException(detail::str(kWhere, ": ", e.what()));
     }
     if (deformed_) {
         positions_ = deformer_.vertices().positions.data();
