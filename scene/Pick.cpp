@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include <m3g/Appearance.h>
@@ -50,6 +51,28 @@ glm::mat4 inverseOrThrow(const glm::mat4& m, const char* what) {
             if (!std::isfinite(inv[c][r]))
                 throw ArithmeticException(detail::str(kWhere, ": ", what, " is singular (inverse not finite)"));
     return inv;
+}
+
+/// False only if the ray o + t d, 0 <= t <= tMax, certainly misses the box
+/// [lo, hi] (padded a little, so that hits on its faces are never lost).
+bool rayMayHitBox(const glm::vec3& o, const glm::vec3& d, glm::vec3 lo, glm::vec3 hi, float tMax) {
+    const glm::vec3 pad = 1e-4f * (hi - lo) + glm::vec3(1e-6f) * glm::max(glm::abs(lo), glm::abs(hi));
+    lo -= pad;
+    hi += pad;
+    float t0 = 0.0f, t1 = tMax;
+    for (int c = 0; c < 3; ++c) {
+        if (d[c] == 0.0f) {
+            if (o[c] < lo[c] || o[c] > hi[c]) return false;
+            continue;
+        }
+        const float inv = 1.0f / d[c];
+        float a = (lo[c] - o[c]) * inv, b = (hi[c] - o[c]) * inv;
+        if (a > b) std::swap(a, b);
+        t0 = std::max(t0, a);
+        t1 = std::min(t1, b);
+        if (t0 > t1) return false;
+    }
+    return true;
 }
 
 /// Extra state of the camera variant.
@@ -179,6 +202,16 @@ void Picker::intersectMesh(Mesh& mesh, const glm::mat4& toGroup) {
         positions_ = scratch_.data();
     }
     auto vertex = [&](int i) { return glm::vec3(positions_[i * 3], positions_[i * 3 + 1], positions_[i * 3 + 2]); };
+
+    // Skip the triangles when the ray misses the vertices' bounding box (or
+    // meets it only beyond the closest hit so far).
+    glm::vec3 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
+    for (int i = 0; i < vertexCount; ++i) {
+        const glm::vec3 v = vertex(i);
+        lo = glm::min(lo, v);
+        hi = glm::max(hi, v);
+    }
+    if (!rayMayHitBox(o, d, lo, hi, hit_.t)) return;
 
     const float dd = glm::dot(d, d);
     constexpr float kParallel = 1e-14f;  // (det / max|det|)^2 below this: ray in the plane or sliver

@@ -4,6 +4,7 @@
 //   BM_AnimateSynthetic    a World of 1,000 animated groups (translation +
 //                          orientation each, two blended controllers)
 //   BM_PickRay/Camera100k  one pick on a 100,000-triangle mesh
+//   BM_PickRayMiss100k     a ray beside it (bounding-box rejection)
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -188,6 +189,19 @@ void BM_PickRay100k(benchmark::State& state) {
         benchmark::Counter(double(s.triangles), benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_PickRay100k)->Unit(benchmark::kMillisecond);
+
+void BM_PickRayMiss100k(benchmark::State& state) {
+    // Passes beside the grid: the bounding box rejects the mesh.
+    PickScene s;
+    RayIntersection ri;
+    bool hit = true;
+    for (auto _ : state) {
+        hit = s.world->pick(-1, 500, 0, 50, 0, 0, -1, &ri);
+        benchmark::DoNotOptimize(hit);
+    }
+    if (hit) state.SkipWithError("the ray hit the grid");
+}
+BENCHMARK(BM_PickRayMiss100k)->Unit(benchmark::kMillisecond);
 
 void BM_PickCamera100k(benchmark::State& state) {
     PickScene s;

@@ -277,6 +277,21 @@ TEST(PickRay, DegenerateTrianglesAreIgnored) {
     EXPECT_FALSE(g2->pick(-1, 0, 0, 2, 0, 0, -1, &ri));  // through the shared vertex
 }
 
+TEST(PickRay, RayStartingInsideTheMeshBounds) {
+    // Floor at z = -5 and ceiling at z = 5 in one mesh (both sides pickable);
+    // the ray starts between them, inside the mesh's bounding box.
+    Ref<VertexBuffer> vb = positionsVB({0, 0, -5, 10, 0, -5, 0, 10, -5, 0, 0, 5, 10, 0, 5, 0, 10, 5});
+    Ref<Group> g = new Group();
+    g->addChild(new Mesh(vb, triangles({0, 1, 2, 3, 4, 5}), culled(PolygonMode::CULL_NONE)));
+    RayIntersection ri;
+    ASSERT_TRUE(pickDown(*g, 1, &ri));
+    EXPECT_FLOAT_EQ(ri.getDistance(), 6.0f);
+    ASSERT_TRUE(pickDown(*g, 1, &ri, -1, +0.5f));
+    EXPECT_FLOAT_EQ(ri.getDistance(), 8.0f);
+    // Sideways from inside: leaves the box without a hit.
+    EXPECT_FALSE(g->pick(-1, 2, 3, 1, 1, 0, 0, &ri));
+}
+
 TEST(PickRay, TransformsAlongThePath) {
     // root -> mid (translate (0,0,-3), scale 2) -> mesh (triangle at local z = 1).
     // In root space the triangle is (0,0,-1) (20,0,-1) (0,20,-1).
