@@ -190,7 +190,10 @@ void Object3D::removeAnimationTrack(AnimationTrack* animationTrack) {
 
 int Object3D::animate(int worldTime) {
     // The traversal of forEachReachable (each reachable object once, depth
-    // first in getReferences order) on per-thread storage kept between calls.
+    // first in getReferences order) on per-thread storage kept between calls,
+    // except that animation tracks are not followed: a track reaches only its
+    // KeyframeSequence and AnimationController, and none of the three has an
+    // animatable property, so none can carry tracks of its own.
     AnimateScratch local;  // only if animate() is re-entered (not expected)
     AnimateScratch& s = tlsScratch.busy ? local : tlsScratch;
     struct Busy {
@@ -209,7 +212,7 @@ int Object3D::animate(int worldTime) {
         if (!s.seen.insert(o)) continue;
         if (!o->tracks_.empty()) applyTracks(*o, o->tracks_, worldTime, validity, s.sum, s.sample);
         s.refs.clear();
-        o->directReferences(s.refs);
+        o->collectReferences(s.refs);
         for (auto it = s.refs.rbegin(); it != s.refs.rend(); ++it) s.stack.push_back(*it);
     }
     s.lastReachable = s.seen.size();
