@@ -1,6 +1,7 @@
 #include "CliArgs.h"
 
 #include <charconv>
+#include <cmath>
 #include <system_error>
 
 namespace m3gcli {
@@ -17,6 +18,7 @@ struct CommandSpec {
 constexpr CommandSpec kCommands[] = {
     {"info", 0, 1, true, true, true, false},
     {"convert", 2, 2, false, true, false, true},
+    {"pick", 3, 3, true, true, true, false},
     {"version", 0, 0, false, false, false, false},
     {"help", 0, 0, false, false, false, false},
 };
@@ -48,6 +50,19 @@ std::optional<int> parseInt(std::string_view text) {
     return value;
 }
 
+std::optional<float> parseFloat(std::string_view text) {
+    if (text.empty()) return std::nullopt;
+    std::string_view digits = text;
+    if (digits.front() == '+') {  // from_chars takes '-' but not '+'
+        digits.remove_prefix(1);
+        if (digits.empty() || digits.front() == '-' || digits.front() == '+') return std::nullopt;
+    }
+    float value = 0.0f;
+    auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    if (ec != std::errc() || end != digits.data() + digits.size() || !std::isfinite(value)) return std::nullopt;
+    return value;
+}
+
 std::string usageText() {
     return "usage: m3g <command> [options]\n"
            "  info [FILE] [--json] [--lenient] [--time T]\n"
@@ -64,6 +79,9 @@ std::string usageText() {
            "            and PSNR; exit status 0 when within the limits\n"
            "  sample -o OUT.m3g\n"
            "            write the project's sample scene (built in code) with the writer\n"
+           "  pick FILE X Y [--time T] [--json] [--lenient]\n"
+           "            animate the World to T ms (default 0) and pick through its active\n"
+           "            camera at viewport point (X, Y), (0, 0) top left, (1, 1) bottom right\n"
            "  version   print the library version\n"
            "  help      print this text\n";
 }
@@ -89,7 +107,8 @@ CliArgs parseCliArgs(std::span<const std::string_view> args) {
     bool optionsEnded = false;
     for (std::size_t i = 1; i < args.size(); ++i) {
         const std::string_view a = args[i];
-        const bool isOption = !optionsEnded && a.size() > 1 && a.front() == '-';
+        // A negative number ("-0.5") is an operand, not an option.
+        const bool isOption = !optionsEnded && a.size() > 1 && a.front() == '-' && !parseFloat(a);
         if (!isOption) {
             out.files.emplace_back(a);
             continue;
@@ -137,6 +156,7 @@ CliArgs parseCliArgs(std::span<const std::string_view> args) {
     if (n < cmd->minFiles) {
         if (out.command == "convert")
             throw CliError(n == 0 ? "convert needs an input and an output file" : "convert needs an output file");
+        if (out.command == "pick") throw CliError("pick needs a file and the viewport coordinates X Y");
         throw CliError("'" + out.command + "' needs a file");
     }
     if (n > cmd->maxFiles)

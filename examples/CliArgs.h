@@ -20,15 +20,15 @@ public:
 };
 
 struct CliArgs {
-    /// "info", "convert", "version" or "help" ("--help"/"-h" anywhere also
+    /// "info", "convert", "pick", "version" or "help" ("--help"/"-h" anywhere also
     /// give "help").
     std::string command;
-    /// Operands in order: info [FILE], convert IN OUT.
+    /// Operands in order: info [FILE], convert IN OUT, pick FILE X Y.
     std::vector<std::string> files;
-    bool json = false;      ///< --json (info)
-    bool lenient = false;   ///< --lenient (info, convert)
+    bool json = false;      ///< --json (info, pick)
+    bool lenient = false;   ///< --lenient (info, convert, pick)
     bool compress = false;  ///< --compress (convert)
-    /// --time T (info): world time in milliseconds passed to animate().
+    /// --time T (info, pick): world time in milliseconds passed to animate().
     std::optional<int> time;
 };
 
@@ -37,7 +37,8 @@ struct CliArgs {
 /// Throws CliError on: no command, an unknown command, an unknown option,
 /// an option not taken by the command, a missing or non-integer (or out of
 /// int range) --time value, a repeated --time, a value given to a flag, or a
-/// wrong number of operands (info: 0 or 1, convert: 2, version/help: 0).
+/// wrong number of operands (info: 0 or 1, convert: 2, pick: 3, version/help:
+/// 0). An argument that reads as a number ("-0.5") is an operand.
 CliArgs parseCliArgs(std::span<const std::string_view> args);
 /// Convenience: argv[1..argc).
 CliArgs parseCliArgs(int argc, const char* const* argv);
@@ -45,6 +46,10 @@ CliArgs parseCliArgs(int argc, const char* const* argv);
 /// Parses a whole decimal int (optional sign); nullopt if `text` is empty,
 /// has other characters or is out of range.
 std::optional<int> parseInt(std::string_view text);
+
+/// Parses a whole finite decimal float (optional sign, as std::from_chars
+/// reads it); nullopt otherwise.
+std::optional<float> parseFloat(std::string_view text);
 
 /// The usage text (several lines, ends with a newline).
 std::string usageText();

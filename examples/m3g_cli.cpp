@@ -12,6 +12,8 @@
 //                                 share of pixels off by more than N, PSNR;
 //                                 exit status 0 = within the limits
 //   m3g sample -o OUT.m3g         write the project's sample scene
+//   m3g pick FILE X Y [--time T] [--json] [--lenient]
+//                                 pick through the World's active camera
 //   m3g version
 // Exit status: 0 success, 1 load/save failure (the IOException message on
 // stderr), 2 bad command line.
@@ -27,6 +29,7 @@
 #include "CliArgs.h"
 #include "Commands.h"
 #include "ObjectDump.h"
+#include "cmd_pick.h"
 
 namespace {
 
@@ -134,6 +137,7 @@ int main(int argc, char** argv) {
         }
         if (args.command == "info") return args.files.empty() ? libraryInfo() : fileInfo(args);
         if (args.command == "convert") return convert(args);
+        if (args.command == "pick") return m3gcli::runPick(args);
     } catch (const m3g::Exception& e) {
         std::fprintf(stderr, "m3g: %s\n", e.what());
         return 1;

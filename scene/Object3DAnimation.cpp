@@ -20,6 +20,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include <m3g/AnimationController.h>
 #include <m3g/AnimationTrack.h>
@@ -33,6 +35,65 @@ namespace m3g {
 namespace {
 
 constexpr double kForever = 0x7FFFFFFF;
+
+/// A set of object pointers (open addressing, linear probing) whose storage
+/// is kept from one use to the next, so that a steady-state animate() does
+/// not allocate.
+class PointerSet {
+public:
+    /// Empties the set, keeping (or growing to) room for `expected` entries.
+    void reset(std::size_t expected) {
+        std::size_t capacity = 64;
+        while (capacity < 2 * expected) capacity *= 2;
+        if (slots_.size() < capacity) slots_.assign(capacity, nullptr);
+        else std::fill(slots_.begin(), slots_.end(), nullptr);
+        count_ = 0;
+    }
+    /// True if `p` was not in the set (and is now).
+    bool insert(const void* p) {
+        if (2 * (count_ + 1) > slots_.size()) grow();
+        if (place(slots_, p)) {
+            ++count_;
+            return true;
+        }
+        return false;
+    }
+    std::size_t size() const noexcept { return count_; }
+
+private:
+    static bool place(std::vector<const void*>& slots, const void* p) {
+        const std::size_t mask = slots.size() - 1;
+        // Fibonacci hashing of the address (low bits are alignment zeros).
+        std::size_t i = static_cast<std::size_t>((reinterpret_cast<std::uintptr_t>(p) >> 4) *
+                                                 std::uint64_t{0x9E3779B97F4A7C15ull} >> 20) & mask;
+        while (slots[i]) {
+            if (slots[i] == p) return false;
+            i = (i + 1) & mask;
+        }
+        slots[i] = p;
+        return true;
+    }
+    void grow() {
+        std::vector<const void*> bigger(std::max<std::size_t>(64, slots_.size() * 2), nullptr);
+        for (const void* p : slots_)
+            if (p) place(bigger, p);
+        slots_.swap(bigger);
+    }
+
+    std::vector<const void*> slots_;
+    std::size_t count_ = 0;
+};
+
+/// Working storage of animate(), reused by later calls on the same thread.
+struct AnimateScratch {
+    PointerSet seen;
+    std::vector<Object3D*> stack, refs;
+    std::vector<float> sum, sample;
+    std::size_t lastReachable = 0;
+    bool busy = false;
+};
+
+thread_local AnimateScratch tlsScratch;
 
 const AnimationTrack& asTrack(const Ref<Object3D>& t) { return static_cast<const AnimationTrack&>(*t); }
 
@@ -49,8 +110,8 @@ double worldValidity(const detail::SampleValidity& v, float speed) {
 
 // Blends and applies the tracks of one object. `validity` is lowered to the
 // world time for which the applied values are known not to change.
-void applyTracks(Object3D& target, const std::vector<Ref<Object3D>>& tracks, int worldTime, double& validity) {
-    std::vector<float> sum, sample;
+void applyTracks(Object3D& target, const std::vector<Ref<Object3D>>& tracks, int worldTime, double& validity,
+                 std::vector<float>& sum, std::vector<float>& sample) {
     std::size_t i = 0;
     while (i < tracks.size()) {
         const int property = asTrack(tracks[i]).getTargetProperty();
@@ -128,11 +189,33 @@ void Object3D::removeAnimationTrack(AnimationTrack* animationTrack) {
 }
 
 int Object3D::animate(int worldTime) {
+    // The traversal of forEachReachable (each reachable object once, depth
+    // first in getReferences order) on per-thread storage kept between calls,
+    // except that animation tracks are not followed: a track reaches only its
+    // KeyframeSequence and AnimationController, and none of the three has an
+    // animatable property, so none can carry tracks of its own.
+    AnimateScratch local;  // only if animate() is re-entered (not expected)
+    AnimateScratch& s = tlsScratch.busy ? local : tlsScratch;
+    struct Busy {
+        AnimateScratch& s;
+        explicit Busy(AnimateScratch& x) : s(x) { s.busy = true; }
+        ~Busy() { s.busy = false; }
+    } busy(s);
+
     double validity = kForever;
-    forEachReachable([&](Object3D& o) {
-        if (!o.tracks_.empty()) applyTracks(o, o.tracks_, worldTime, validity);
-        return true;
-    });
+    s.seen.reset(s.lastReachable);
+    s.stack.clear();
+    s.stack.push_back(this);
+    while (!s.stack.empty()) {
+        Object3D* o = s.stack.back();
+        s.stack.pop_back();
+        if (!s.seen.insert(o)) continue;
+        if (!o->tracks_.empty()) applyTracks(*o, o->tracks_, worldTime, validity, s.sum, s.sample);
+        s.refs.clear();
+        o->collectReferences(s.refs);
+        for (auto it = s.refs.rbegin(); it != s.refs.rend(); ++it) s.stack.push_back(*it);
+    }
+    s.lastReachable = s.seen.size();
     return static_cast<int>(std::clamp(validity, 0.0, kForever));
 }
 

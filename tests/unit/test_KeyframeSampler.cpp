@@ -257,3 +257,48 @@ TEST(KeyframeSampler, ValidRangeSubset) {
     EXPECT_FLOAT_EQ(sample1(*s, 15), 5);
     EXPECT_FLOAT_EQ(sample1(*s, 90), 10);
 }
+
+TEST(KeyframeSampler, SplineNonUniformSpacingCurvedData) {
+    // P = 0, 20, 10, 40 at t = 0, 10, 30, 40 (spacings 10, 20, 10), CONSTANT.
+    // Key 1: central difference (10 - 0)/2 = 5; in scale 2*10/30, out 2*20/30
+    //   -> T1in = 10/3, T1out = 20/3.
+    // Key 2: central difference (40 - 20)/2 = 10; in scale 2*20/30, out
+    //   2*10/30 -> T2in = 40/3, T2out = 20/3. Key 3 (CONSTANT end): 0.
+    auto s = makeSeq(KeyframeSequence::SPLINE, KeyframeSequence::CONSTANT, 40,
+                     {{0, {0}}, {10, {20}}, {30, {10}}, {40, {40}}});
+    // t = 20, u = 0.5: 0.5*20 + 0.5*10 + 0.125*(20/3) - 0.125*(40/3) = 14.1666...
+    EXPECT_NEAR(sample1(*s, 20), 15.0f - 2.5f / 3.0f, 1e-4f);
+    // t = 15, u = 0.25: 0.84375*20 + 0.15625*10 + 0.140625*(20/3) - 0.046875*(40/3) = 18.75
+    EXPECT_NEAR(sample1(*s, 15), 18.75f, 1e-4f);
+    // t = 35, u = 0.5: 0.5*10 + 0.5*40 + 0.125*(20/3) - 0.125*0 = 25.8333...
+    EXPECT_NEAR(sample1(*s, 35), 25.0f + 2.5f / 3.0f, 1e-4f);
+    // t = 5, u = 0.5 (key 0 is the CONSTANT start: tangent 0):
+    // 0.5*0 + 0.5*20 + 0 - 0.125*(10/3) = 9.5833...
+    EXPECT_NEAR(sample1(*s, 5), 10.0f - 1.25f / 3.0f, 1e-4f);
+}
+
+TEST(KeyframeSampler, SquadLoopFourKeysNonConstantRate) {
+    // Rotations about Z only, so everything commutes and a quaternion is
+    // fixed by its half-angle; slerp and exp/log then act on half-angles.
+    // Half-angles 0, 10, 40, 30 at t = 0, 10, 20, 30; LOOP, duration 40, so
+    // every spacing is 10 (tangent scales 1) and the wrap goes 30 -> 0.
+    // Differences to the next key: d0 = 10, d1 = 30, d2 = -10, d3 = -30.
+    // Tangents T_i = (d_{i-1} + d_i)/2: T0 = -10, T1 = 20, T2 = 10, T3 = -20.
+    // A_i = a_i + (T_i - d_i)/2, B_i = a_i + (d_{i-1} - T_i)/2:
+    //   A1 = 5, B2 = 50, A3 = 35, B0 = -10.
+    // squad = L + 2u(1-u)(M - L) with L = lerp(a_i, a_i+1), M = lerp(A_i, B_i+1).
+    auto s = makeSeq(KeyframeSequence::SQUAD, KeyframeSequence::LOOP, 40,
+                     {{0, zQuat(0)}, {10, zQuat(10)}, {20, zQuat(40)}, {30, zQuat(30)}});
+    // t = 15 (u 0.5): L = 25, M = 27.5 -> 25 + 0.5 * 2.5 = 26.25.
+    expectQuat(sampleN(*s, 15), zQuat(26.25));
+    // t = 12 (u 0.2): L = 16, M = 5 + 0.2 * 45 = 14 -> 16 + 0.32 * (-2) = 15.36.
+    expectQuat(sampleN(*s, 12), zQuat(15.36));
+    // Wrap segment, t = 35 (u 0.5): L = 15, M = (35 - 10)/2 = 12.5 -> 13.75.
+    expectQuat(sampleN(*s, 35), zQuat(13.75));
+    // The same point one loop later and one loop earlier.
+    expectQuat(sampleN(*s, 75), zQuat(13.75));
+    expectQuat(sampleN(*s, -5), zQuat(13.75));
+    // The keys themselves.
+    expectQuat(sampleN(*s, 20), zQuat(40));
+    expectQuat(sampleN(*s, 40), zQuat(0));
+}

@@ -344,3 +344,226 @@ TEST(World, ActiveCameraAndBackgroundDefaults) {
     w->setBackground(nullptr);
     EXPECT_EQ(w->getBackground(), nullptr);
 }
+
+// ---- Alignment, every case of spec digest §5.2 (hand-computed axes) ----
+
+namespace {
+
+/// Direction of the node's local axis `v` in its parent's space (composite
+/// transform applied to (v, 0)).
+std::array<float, 3> axisInParent(const Node& n, std::array<float, 3> v) {
+    Transform c;
+    n.getCompositeTransform(&c);
+    std::array<float, 4> d{v[0], v[1], v[2], 0};
+    c.transform(d);
+    return {d[0], d[1], d[2]};
+}
+
+/// Direction of the node's local axis `v` in the coordinates of `to`.
+std::array<float, 3> axisIn(const Node& n, const Node& to, std::array<float, 3> v) {
+    Transform t;
+    EXPECT_TRUE(n.getTransformTo(&to, &t));
+    std::array<float, 4> d{v[0], v[1], v[2], 0};
+    t.transform(d);
+    return {d[0], d[1], d[2]};
+}
+
+void expectVec(std::array<float, 3> v, std::array<float, 3> expected, const char* what) {
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(v[i], expected[i], 1e-5f) << what << " component " << i;
+}
+
+constexpr std::array<float, 3> kX{1, 0, 0}, kY{0, 1, 0}, kZ{0, 0, 1};
+
+}  // namespace
+
+TEST(NodeAlign, ZToEachAxisOfARotatedReference) {
+    // The reference is turned 90 degrees about Y: its axes in parent space
+    // are X -> (0,0,-1), Y -> (0,1,0), Z -> (1,0,0). The node's translation
+    // plays no part for axis targets.
+    struct Case {
+        int target;
+        std::array<float, 3> z;
+    };
+    for (const Case& c : {Case{Node::X_AXIS, {0, 0, -1}}, Case{Node::Y_AXIS, {0, 1, 0}}, Case{Node::Z_AXIS, {1, 0, 0}}}) {
+        Ref<Group> root = make<Group>();
+        Ref<Group> n = make<Group>(), ref = make<Group>();
+        root->addChild(n);
+        root->addChild(ref);
+        ref->setOrientation(90, 0, 1, 0);
+        ref->setTranslation(7, -3, 2);
+        n->setTranslation(3, 4, 5);
+        n->setAlignment(ref, c.target, nullptr, Node::NONE);
+        n->align(nullptr);
+        expectVec(axisInParent(*n, kZ), c.z, "Z");
+    }
+    // Z onto the reference's Z (1,0,0) by the shortest rotation, 90 degrees
+    // about +Y: Y stays, X goes to -Z.
+    Ref<Group> root = make<Group>();
+    Ref<Group> n = make<Group>(), ref = make<Group>();
+    root->addChild(n);
+    root->addChild(ref);
+    ref->setOrientation(90, 0, 1, 0);
+    n->setAlignment(ref, Node::Z_AXIS, nullptr, Node::NONE);
+    n->align(nullptr);
+    expectVec(axisInParent(*n, kY), {0, 1, 0}, "Y");
+    expectVec(axisInParent(*n, kX), {0, 0, -1}, "X");
+}
+
+TEST(NodeAlign, YOnlyIsTheShortestRotationOfY) {
+    Ref<Group> root = make<Group>();
+    Ref<Group> n = make<Group>(), ref = make<Group>();
+    root->addChild(n);
+    root->addChild(ref);
+    // Y towards the reference origin at (0,0,10): 90 degrees about +X, so
+    // Y -> +Z, Z -> -Y, X stays.
+    ref->setTranslation(0, 0, 10);
+    n->setAlignment(nullptr, Node::NONE, ref, Node::ORIGIN);
+    n->align(nullptr);
+    expectVec(axisInParent(*n, kY), {0, 0, 1}, "Y");
+    expectVec(axisInParent(*n, kZ), {0, -1, 0}, "Z");
+    expectVec(axisInParent(*n, kX), {1, 0, 0}, "X");
+    // Y onto the reference's Y axis, the reference turned 90 degrees about Z
+    // (its Y is (-1,0,0)): 90 degrees about +Z, so X -> +Y and Z stays.
+    ref->setTranslation(0, 0, 0);
+    ref->setOrientation(90, 0, 0, 1);
+    n->setAlignment(nullptr, Node::NONE, ref, Node::Y_AXIS);
+    n->align(nullptr);
+    expectVec(axisInParent(*n, kY), {-1, 0, 0}, "Y");
+    expectVec(axisInParent(*n, kX), {0, 1, 0}, "X");
+    expectVec(axisInParent(*n, kZ), {0, 0, 1}, "Z");
+}
+
+TEST(NodeAlign, ZAndYTwistsAboutTheAlignedZ) {
+    Ref<Group> root = make<Group>();
+    Ref<Group> n = make<Group>(), zRef = make<Group>(), yRef = make<Group>();
+    root->addChild(n);
+    root->addChild(zRef);
+    root->addChild(yRef);
+    zRef->setTranslation(10, 0, 0);  // Z -> +X
+    // Y towards yRef's Z axis (0,0,1), perpendicular to the new Z: exact,
+    // and X = Y x Z = (0,1,0).
+    n->setAlignment(zRef, Node::ORIGIN, yRef, Node::Z_AXIS);
+    n->align(nullptr);
+    expectVec(axisInParent(*n, kZ), {1, 0, 0}, "Z");
+    expectVec(axisInParent(*n, kY), {0, 0, 1}, "Y");
+    expectVec(axisInParent(*n, kX), {0, 1, 0}, "X");
+    // Y towards (1,1,0)/sqrt 2 (yRef turned -45 degrees about Z): only its
+    // part across Z, (0,1,0), can be matched; Z stays exact.
+    yRef->setOrientation(-45, 0, 0, 1);
+    n->setAlignment(zRef, Node::ORIGIN, yRef, Node::Y_AXIS);
+    n->align(nullptr);
+    expectVec(axisInParent(*n, kZ), {1, 0, 0}, "Z");
+    expectVec(axisInParent(*n, kY), {0, 1, 0}, "Y");
+    // Y target parallel to the new Z (yRef's X axis = (1,0,0) when
+    // unrotated): no twist, the Z-only result (90 degrees about +Y).
+    yRef->setOrientation(0, 0, 0, 1);
+    n->setOrientation(33, 1, 1, 0);
+    n->setAlignment(zRef, Node::ORIGIN, yRef, Node::X_AXIS);
+    n->align(nullptr);
+    expectVec(axisInParent(*n, kZ), {1, 0, 0}, "Z");
+    expectVec(axisInParent(*n, kY), {0, 1, 0}, "Y");
+    expectVec(axisInParent(*n, kX), {0, 0, -1}, "X");
+}
+
+TEST(NodeAlign, ReplacesOrientationKeepsTranslationAndScale) {
+    Ref<Group> root = make<Group>();
+    Ref<Group> n = make<Group>(), ref = make<Group>();
+    root->addChild(n);
+    root->addChild(ref);
+    n->setTranslation(1, 2, 3);
+    n->setScale(2, 2, 2);
+    n->setOrientation(30, 1, 0, 0);
+    n->postRotate(50, 0, 0, 1);
+    ref->setTranslation(1, 12, 3);  // 10 above the node: Z -> +Y, -90 about X
+    n->setAlignment(ref, Node::ORIGIN, nullptr, Node::NONE);
+    n->align(nullptr);
+    float t[3], s[3];
+    n->getTranslation(t);
+    n->getScale(s);
+    EXPECT_EQ(t[0], 1.0f);
+    EXPECT_EQ(t[1], 2.0f);
+    EXPECT_EQ(t[2], 3.0f);
+    EXPECT_EQ(s[0], 2.0f);
+    EXPECT_EQ(s[2], 2.0f);
+    // Unit axes scaled by 2; the earlier rotation is gone.
+    expectVec(axisInParent(*n, kZ), {0, 2, 0}, "Z");
+    expectVec(axisInParent(*n, kX), {2, 0, 0}, "X");
+    float aa[4];
+    n->getOrientation(aa);
+    EXPECT_NEAR(aa[0], 90, 1e-3);
+    EXPECT_NEAR(aa[1], -1, 1e-5);
+}
+
+TEST(NodeAlign, TargetsAreTakenInTheParentSpace) {
+    // parent turned 90 degrees about Z; the reference at world (10,0,0) is at
+    // (0,-10,0) in the parent's space, so the node's Z must be (0,-1,0) there
+    // and (1,0,0) in the world.
+    Ref<Group> root = make<Group>();
+    Ref<Group> parent = make<Group>(), n = make<Group>(), ref = make<Group>();
+    root->addChild(parent);
+    parent->addChild(n);
+    root->addChild(ref);
+    parent->setOrientation(90, 0, 0, 1);
+    ref->setTranslation(10, 0, 0);
+    n->setAlignment(ref, Node::ORIGIN, nullptr, Node::NONE);
+    root->align(nullptr);
+    expectVec(axisInParent(*n, kZ), {0, -1, 0}, "Z (parent)");
+    expectVec(axisIn(*n, *root, kZ), {1, 0, 0}, "Z (world)");
+}
+
+TEST(NodeAlign, DescendantsAreAlignedAfterTheirAncestors) {
+    // p at the origin aims Z at r1 (10,0,0): 90 degrees about +Y. c, at
+    // (0,0,5) in p (world (5,0,0)), aims Z at r2 (5,10,0). Computed after p's
+    // new orientation, r2 is at (0,10,5) in p's space, (0,10,0) from c: c's Z
+    // is +Y in p and in the world, pointing from c at r2.
+    Ref<Group> root = make<Group>();
+    Ref<Group> p = make<Group>(), c = make<Group>(), r1 = make<Group>(), r2 = make<Group>();
+    root->addChild(p);
+    p->addChild(c);
+    root->addChild(r1);
+    root->addChild(r2);
+    c->setTranslation(0, 0, 5);
+    r1->setTranslation(10, 0, 0);
+    r2->setTranslation(5, 10, 0);
+    p->setAlignment(r1, Node::ORIGIN, nullptr, Node::NONE);
+    c->setAlignment(r2, Node::ORIGIN, nullptr, Node::NONE);
+    root->align(nullptr);
+    expectVec(axisIn(*p, *root, kZ), {1, 0, 0}, "p Z");
+    expectVec(axisIn(*c, *root, kZ), {0, 1, 0}, "c Z");
+    expectVec(axisInParent(*c, kZ), {0, 1, 0}, "c Z in p");
+}
+
+TEST(NodeAlign, OnlyTheSubtreeOfTheAlignedNode) {
+    Ref<Group> root = make<Group>();
+    Ref<Group> a = make<Group>(), b = make<Group>(), ref = make<Group>();
+    root->addChild(a);
+    root->addChild(b);
+    root->addChild(ref);
+    ref->setTranslation(0, 10, 0);
+    a->setAlignment(ref, Node::ORIGIN, nullptr, Node::NONE);
+    b->setAlignment(ref, Node::ORIGIN, nullptr, Node::NONE);
+    a->align(nullptr);
+    expectVec(axisInParent(*a, kZ), {0, 1, 0}, "a Z");
+    expectVec(axisInParent(*b, kZ), {0, 0, 1}, "b Z (untouched)");
+    // align() on the parent reaches both.
+    root->align(nullptr);
+    expectVec(axisInParent(*b, kZ), {0, 1, 0}, "b Z");
+}
+
+TEST(NodeAlign, NullReferencesResolveToTheArgumentOnBothAxes) {
+    Ref<Group> root = make<Group>();
+    Ref<Group> n = make<Group>(), cam = make<Group>();
+    root->addChild(n);
+    root->addChild(cam);
+    cam->setTranslation(0, 0, 10);
+    cam->setOrientation(90, 0, 0, 1);  // cam's Y axis is (-1,0,0)
+    n->setAlignment(nullptr, Node::ORIGIN, nullptr, Node::Y_AXIS);
+    n->align(cam);
+    expectVec(axisInParent(*n, kZ), {0, 0, 1}, "Z");
+    expectVec(axisInParent(*n, kY), {-1, 0, 0}, "Y");
+    // Y only, null reference and null argument: ISE.
+    n->setAlignment(nullptr, Node::NONE, nullptr, Node::ORIGIN);
+    EXPECT_THROW(n->align(nullptr), IllegalStateException);
+    n->align(cam);  // Y towards (0,0,10)
+    expectVec(axisInParent(*n, kY), {0, 0, 1}, "Y");
+}

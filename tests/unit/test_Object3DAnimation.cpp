@@ -11,6 +11,7 @@
 #include <m3g/Group.h>
 #include <m3g/KeyframeSequence.h>
 #include <m3g/Light.h>
+#include <m3g/m3g.h>
 
 using namespace m3g;
 
@@ -406,4 +407,264 @@ TEST(Object3DAnimation, DuplicateSharesTracks) {
     EXPECT_EQ(d->getAnimationTrack(0), t);
     d->animate(0);
     EXPECT_EQ(translation(*d)[1], 2.0f);
+}
+
+// ---- Issue 6 audit: controller timing, blending, every animatable property ----
+
+namespace {
+
+/// LINEAR from `from` at 0 to `to` at 100 (CONSTANT): animate(50) gives the midpoint.
+Ref<KeyframeSequence> ramp(std::vector<float> from, std::vector<float> to) {
+    return makeSeq(KeyframeSequence::LINEAR, 100, {{0, std::move(from)}, {100, std::move(to)}});
+}
+
+void animateWith(Object3D& o, int property, Ref<KeyframeSequence> s) { o.addAnimationTrack(track(s, property)); }
+
+}  // namespace
+
+TEST(Object3DAnimation, ControllerActiveIntervalEdges) {
+    // Interval [100, 200): active at 100 and 199, not at 200 or 99.
+    Ref<Group> g = make<Group>();
+    Ref<AnimationTrack> t = track(ramp({0, 0, 0}, {100, 0, 0}), AnimationTrack::TRANSLATION);
+    t->getController()->setActiveInterval(100, 200);
+    t->getController()->setPosition(0, 100);  // sequence 0 at world 100
+    g->addAnimationTrack(t);
+    g->setTranslation(-1, 0, 0);
+    EXPECT_EQ(g->animate(99), 1);  // becomes active in 1 ms
+    EXPECT_EQ(translation(*g)[0], -1.0f);
+    g->animate(100);
+    EXPECT_FLOAT_EQ(translation(*g)[0], 0.0f);
+    g->animate(199);
+    EXPECT_FLOAT_EQ(translation(*g)[0], 99.0f);
+    g->setTranslation(-1, 0, 0);
+    EXPECT_EQ(g->animate(200), 0x7FFFFFFF);  // never active again
+    EXPECT_EQ(translation(*g)[0], -1.0f);
+    // start == end: active at every time, even far before.
+    t->getController()->setActiveInterval(50, 50);
+    g->animate(-1000);
+    EXPECT_FLOAT_EQ(translation(*g)[0], 0.0f);  // position -1100: before the first key
+    g->animate(150);
+    EXPECT_FLOAT_EQ(translation(*g)[0], 50.0f);
+}
+
+TEST(Object3DAnimation, ControllerSpeedAndPositionEdges) {
+    Ref<Group> g = make<Group>();
+    Ref<AnimationTrack> t = track(ramp({0, 0, 0}, {100, 0, 0}), AnimationTrack::TRANSLATION);
+    g->addAnimationTrack(t);
+    AnimationController& c = *t->getController();
+    // Backwards: sequence 100 at world 0, speed -1: at 30 the position is 70.
+    c.setPosition(100, 0);
+    c.setSpeed(-1, 0);
+    g->animate(30);
+    EXPECT_FLOAT_EQ(translation(*g)[0], 70.0f);
+    g->animate(-20);  // position 120: past the last key, clamped (CONSTANT)
+    EXPECT_FLOAT_EQ(translation(*g)[0], 100.0f);
+    // Speed changed at world 30 keeps the position continuous (70 there).
+    c.setSpeed(0.5f, 30);
+    g->animate(50);  // 70 + 0.5 * 20
+    EXPECT_FLOAT_EQ(translation(*g)[0], 80.0f);
+    // Speed 0: frozen.
+    c.setSpeed(0, 50);
+    g->animate(100000);
+    EXPECT_FLOAT_EQ(translation(*g)[0], 80.0f);
+    // Fractional positions interpolate (speed 0.25 from 10 at world 0).
+    c.setPosition(10, 0);
+    c.setSpeed(0.25f, 0);
+    g->animate(3);  // 10.75
+    EXPECT_FLOAT_EQ(translation(*g)[0], 10.75f);
+}
+
+TEST(Object3DAnimation, LoopWithNegativeSequenceTime) {
+    // LOOP, duration 100, keys 0 -> 0 at 0 and 80 at 80, wrap 80 -> 0 over 20.
+    Ref<Group> g = make<Group>();
+    auto s = makeSeq(KeyframeSequence::LINEAR, 100, {{0, {0, 0, 0}}, {80, {80, 0, 0}}}, KeyframeSequence::LOOP);
+    Ref<AnimationTrack> t = track(s, AnimationTrack::TRANSLATION);
+    g->addAnimationTrack(t);
+    t->getController()->setPosition(-10, 0);  // -10 -> 90: wrap segment, u = 0.5
+    g->animate(0);
+    EXPECT_FLOAT_EQ(translation(*g)[0], 40.0f);
+    g->animate(-250);  // -260 -> 40
+    EXPECT_FLOAT_EQ(translation(*g)[0], 40.0f);
+    g->animate(315);  // 305 -> 5
+    EXPECT_FLOAT_EQ(translation(*g)[0], 5.0f);
+}
+
+TEST(Object3DAnimation, TwoControllersBlendTheirOwnSamples) {
+    // One sequence 0 -> 100 over 100 ms. Controller A: weight 0.25, position
+    // = world time. Controller B: weight 0.75, sequence 80 at world 0, speed
+    // 0.5. At world 40: A samples 40, B samples 100 (clamped at 100 from
+    // position 100): 0.25 * 40 + 0.75 * 100 = 85.
+    Ref<Group> g = make<Group>();
+    Ref<KeyframeSequence> s = ramp({0, 0, 0}, {100, 0, 0});
+    Ref<AnimationTrack> a = track(s, AnimationTrack::TRANSLATION, 0.25f);
+    Ref<AnimationTrack> b = track(s, AnimationTrack::TRANSLATION, 0.75f);
+    b->getController()->setPosition(80, 0);
+    b->getController()->setSpeed(0.5f, 0);
+    g->addAnimationTrack(a);
+    g->addAnimationTrack(b);
+    g->animate(40);
+    EXPECT_FLOAT_EQ(translation(*g)[0], 85.0f);
+    // At world 20: A 20, B 90: 5 + 67.5.
+    g->animate(20);
+    EXPECT_FLOAT_EQ(translation(*g)[0], 72.5f);
+    // B outside its interval: A alone, not renormalised: 0.25 * 20.
+    b->getController()->setActiveInterval(1000, 2000);
+    g->animate(20);
+    EXPECT_FLOAT_EQ(translation(*g)[0], 5.0f);
+}
+
+TEST(Object3DAnimation, BlendedOrientationsAreRenormalised) {
+    // 0.5 * identity + 0.5 * (90 degrees about Z) = (0, 0, 0.3536, 0.8536),
+    // renormalised: 45 degrees about Z.
+    Ref<Group> g = make<Group>();
+    const float h = float(std::sqrt(0.5));
+    g->addAnimationTrack(
+        track(makeSeq(KeyframeSequence::SLERP, 10, {{0, {0, 0, 0, 1}}}), AnimationTrack::ORIENTATION, 0.5f));
+    g->addAnimationTrack(
+        track(makeSeq(KeyframeSequence::SLERP, 10, {{0, {0, 0, h, h}}}), AnimationTrack::ORIENTATION, 0.5f));
+    g->animate(0);
+    float aa[4];
+    g->getOrientation(aa);
+    EXPECT_NEAR(aa[0], 45.0f, 1e-3f);
+    EXPECT_NEAR(aa[3], 1.0f, 1e-5f);
+}
+
+TEST(Object3DAnimation, EveryAnimatablePropertyThroughAWorld) {
+    // Every property of spec digest §4.1-4.25 on its class, reached from a
+    // World through children, the background, appearances and vertex
+    // buffers; LINEAR ramps sampled halfway (animate(50)). Colors (0.2, 0.4,
+    // 0.6) pack to 0x336699; alpha 0.4 to 0x66, 0.2 to 0x33.
+    const std::vector<float> c0{0.0f, 0.2f, 0.4f}, c1{0.4f, 0.6f, 0.8f};
+    Ref<World> w = make<World>();
+
+    Ref<Group> g = make<Group>();
+    w->addChild(g);
+    animateWith(*g, AnimationTrack::ALPHA, ramp({0}, {0.5f}));
+    animateWith(*g, AnimationTrack::PICKABILITY, ramp({0}, {0.8f}));  // 0.4
+    animateWith(*g, AnimationTrack::VISIBILITY, ramp({0.4f}, {0.8f}));  // 0.6
+    animateWith(*g, AnimationTrack::TRANSLATION, ramp({0, 0, 0}, {2, 4, 6}));
+    animateWith(*g, AnimationTrack::SCALE, ramp({1, 1, 1}, {3, 5, 7}));
+    animateWith(*g, AnimationTrack::ORIENTATION,
+                makeSeq(KeyframeSequence::SLERP, 100, {{0, {0, 0, 0, 1}}, {100, {1, 0, 0, 0}}}));
+
+    Ref<Camera> cam = make<Camera>();
+    cam->setPerspective(60, 1, 1, 100);
+    w->addChild(cam);
+    animateWith(*cam, AnimationTrack::FIELD_OF_VIEW, ramp({40}, {60}));
+    animateWith(*cam, AnimationTrack::NEAR_DISTANCE, ramp({1}, {3}));
+    animateWith(*cam, AnimationTrack::FAR_DISTANCE, ramp({100}, {300}));
+
+    Ref<Light> light = make<Light>();
+    w->addChild(light);
+    animateWith(*light, AnimationTrack::COLOR, ramp(c0, c1));
+    animateWith(*light, AnimationTrack::INTENSITY, ramp({1}, {4}));
+    animateWith(*light, AnimationTrack::SPOT_ANGLE, ramp({20}, {40}));
+    animateWith(*light, AnimationTrack::SPOT_EXPONENT, ramp({4}, {20}));
+
+    Ref<Material> mat = make<Material>();
+    for (int p : {AnimationTrack::AMBIENT_COLOR, AnimationTrack::DIFFUSE_COLOR, AnimationTrack::EMISSIVE_COLOR,
+                  AnimationTrack::SPECULAR_COLOR})
+        animateWith(*mat, p, ramp(c0, c1));
+    animateWith(*mat, AnimationTrack::ALPHA, ramp({0}, {0.8f}));
+    animateWith(*mat, AnimationTrack::SHININESS, ramp({0}, {128}));
+    Ref<Fog> fog = make<Fog>();
+    animateWith(*fog, AnimationTrack::COLOR, ramp(c0, c1));
+    animateWith(*fog, AnimationTrack::DENSITY, ramp({0}, {1}));
+    animateWith(*fog, AnimationTrack::NEAR_DISTANCE, ramp({0}, {6}));
+    animateWith(*fog, AnimationTrack::FAR_DISTANCE, ramp({20}, {40}));
+    Ref<Texture2D> tex = make<Texture2D>(make<Image2D>(Image2D::RGB, 4, 4));
+    animateWith(*tex, AnimationTrack::COLOR, ramp(c0, c1));
+    animateWith(*tex, AnimationTrack::TRANSLATION, ramp({0, 0, 0}, {2, 0, 0}));
+    Ref<Appearance> app = make<Appearance>();
+    app->setMaterial(mat);
+    app->setFog(fog);
+    app->setTexture(0, tex);
+    Ref<VertexBuffer> vb = make<VertexBuffer>();
+    vb->setPositions(make<VertexArray>(3, 3, 2), 1.0f, {});
+    animateWith(*vb, AnimationTrack::COLOR, ramp(c0, c1));
+    animateWith(*vb, AnimationTrack::ALPHA, ramp({0}, {0.8f}));
+    const int lengths[] = {3};
+    Ref<IndexBuffer> ib = make<TriangleStripArray>(0, lengths);
+    std::vector<Ref<VertexBuffer>> targets{make<VertexBuffer>(), make<VertexBuffer>()};
+    for (auto& t : targets) t->setPositions(make<VertexArray>(3, 3, 2), 1.0f, {});
+    Ref<MorphingMesh> morph = make<MorphingMesh>(vb, targets, ib, app);
+    animateWith(*morph, AnimationTrack::MORPH_WEIGHTS, ramp({0, 0}, {0.5f, 1.5f}));
+    w->addChild(morph);
+
+    Ref<Background> bg = make<Background>();
+    animateWith(*bg, AnimationTrack::COLOR, ramp(c0, c1));
+    animateWith(*bg, AnimationTrack::ALPHA, ramp({0}, {0.4f}));
+    animateWith(*bg, AnimationTrack::CROP, ramp({0, 0, 0, 0}, {2, 4, 6, 8}));
+    w->setBackground(bg);
+
+    Ref<Sprite3D> s2 = make<Sprite3D>(true, make<Image2D>(Image2D::RGB, 8, 8), app);
+    animateWith(*s2, AnimationTrack::CROP, ramp({0, 0}, {10, 20}));
+    Ref<Sprite3D> s4 = make<Sprite3D>(false, make<Image2D>(Image2D::RGB, 8, 8), nullptr);
+    animateWith(*s4, AnimationTrack::CROP, ramp({0, 0, 0, 0}, {2, 4, -6, 8}));
+    w->addChild(s2);
+    w->addChild(s4);
+
+    EXPECT_EQ(w->animate(50), 0);
+
+    EXPECT_FLOAT_EQ(g->getAlphaFactor(), 0.25f);
+    EXPECT_FALSE(g->isPickingEnabled());
+    EXPECT_TRUE(g->isRenderingEnabled());
+    const auto t = translation(*g);
+    EXPECT_FLOAT_EQ(t[0], 1);
+    EXPECT_FLOAT_EQ(t[1], 2);
+    EXPECT_FLOAT_EQ(t[2], 3);
+    float sc[3];
+    g->getScale(sc);
+    EXPECT_FLOAT_EQ(sc[0], 2);
+    EXPECT_FLOAT_EQ(sc[1], 3);
+    EXPECT_FLOAT_EQ(sc[2], 4);
+    float aa[4];
+    g->getOrientation(aa);  // halfway from identity to 180 about X
+    EXPECT_NEAR(aa[0], 90, 1e-3);
+    EXPECT_NEAR(aa[1], 1, 1e-5);
+
+    float p[4];
+    cam->getProjection(std::span<float>(p));
+    EXPECT_FLOAT_EQ(p[0], 50);
+    EXPECT_FLOAT_EQ(p[2], 2);
+    EXPECT_FLOAT_EQ(p[3], 200);
+
+    EXPECT_EQ(light->getColor(), 0x336699);
+    EXPECT_FLOAT_EQ(light->getIntensity(), 2.5f);
+    EXPECT_FLOAT_EQ(light->getSpotAngle(), 30);
+    EXPECT_FLOAT_EQ(light->getSpotExponent(), 12);
+
+    EXPECT_EQ(mat->getColor(Material::AMBIENT) & 0xFFFFFF, 0x336699);
+    EXPECT_EQ(static_cast<std::uint32_t>(mat->getColor(Material::DIFFUSE)), 0x66336699u);
+    EXPECT_EQ(mat->getColor(Material::EMISSIVE) & 0xFFFFFF, 0x336699);
+    EXPECT_EQ(mat->getColor(Material::SPECULAR) & 0xFFFFFF, 0x336699);
+    EXPECT_FLOAT_EQ(mat->getShininess(), 64);
+    EXPECT_EQ(fog->getColor(), 0x336699);
+    EXPECT_FLOAT_EQ(fog->getDensity(), 0.5f);
+    EXPECT_FLOAT_EQ(fog->getNearDistance(), 3);
+    EXPECT_FLOAT_EQ(fog->getFarDistance(), 30);
+    EXPECT_EQ(tex->getBlendColor(), 0x336699);
+    float tt[3];
+    tex->getTranslation(tt);
+    EXPECT_FLOAT_EQ(tt[0], 1);
+    EXPECT_EQ(static_cast<std::uint32_t>(vb->getDefaultColor()), 0x66336699u);
+    float mw[2];
+    morph->getWeights(mw);
+    EXPECT_FLOAT_EQ(mw[0], 0.25f);
+    EXPECT_FLOAT_EQ(mw[1], 0.75f);
+
+    EXPECT_EQ(static_cast<std::uint32_t>(bg->getColor()), 0x33336699u);
+    EXPECT_EQ(bg->getCropX(), 1);
+    EXPECT_EQ(bg->getCropY(), 2);
+    EXPECT_EQ(bg->getCropWidth(), 3);
+    EXPECT_EQ(bg->getCropHeight(), 4);
+
+    EXPECT_EQ(s2->getCropX(), 5);
+    EXPECT_EQ(s2->getCropY(), 10);
+    EXPECT_EQ(s2->getCropWidth(), 8);  // 2 components: x and y only
+    EXPECT_EQ(s2->getCropHeight(), 8);
+    EXPECT_EQ(s4->getCropX(), 1);
+    EXPECT_EQ(s4->getCropY(), 2);
+    EXPECT_EQ(s4->getCropWidth(), -3);
+    EXPECT_EQ(s4->getCropHeight(), 4);
 }

@@ -1,0 +1,44 @@
+// `m3g pick FILE X Y [--time T] [--json] [--lenient]`: load a file, animate
+// its World to T ms (default 0) and pick through the World's active camera at
+// normalised viewport coordinates (X, Y) ((0, 0) top left, (1, 1) bottom
+// right; Group::pick, spec digest §5.13). Prints the RayIntersection or
+// "no hit". Part of m3g_cli_support (examples/), not of the library.
+#pragma once
+
+#include <span>
+#include <stdexcept>
+#include <string>
+
+#include <m3g/Object3D.h>
+
+#include "CliArgs.h"
+
+namespace m3gcli {
+
+/// The file has no World, or its World has no active camera (or one outside
+/// the World); what() is a
+/// one-line message for stderr (without the "m3g: " prefix).
+class PickError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// Animates the first World among `roots` to `time`, picks (scope -1) at
+/// (x, y) through its active camera and describes the result:
+///  text: "hit: Class #id userID=N" (ids as in `m3g info`), distance,
+///        submesh, S/T per texture unit, normal, ray; or "no hit";
+///  json: {"time", "x", "y", "hit": bool, and on a hit "node": {"id",
+///        "class", "userID"}, "distance", "submesh", "textureCoordinates":
+///        [{"unit", "s", "t"}...], "normal": [x, y, z], "ray": {"origin",
+///        "direction"}}.
+/// Throws PickError if there is no World, no active camera or the camera is
+/// not in the World; m3g
+/// exceptions from animate() or pick() pass through.
+std::string pickReport(std::span<m3g::Object3D* const> roots, int time, float x, float y, bool json);
+
+/// The whole command for parsed arguments (command "pick", files FILE X Y):
+/// loads, reports on stdout; 0 on success (hit or not), 1 on a load, pick or
+/// PickError failure (message on stderr), 2 if X or Y is not a number.
+int runPick(const CliArgs& args);
+
+}  // namespace m3gcli
