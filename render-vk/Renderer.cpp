@@ -17,10 +17,12 @@
 #include <m3g/Material.h>
 #include <m3g/Mesh.h>
 #include <m3g/PolygonMode.h>
+#include <m3g/Sprite3D.h>
 #include <m3g/Texture2D.h>
 #include <m3g/VertexBuffer.h>
 
 #include "RenderQueue.h"
+#include "SpriteProjection.h"
 
 namespace m3g::vk {
 
@@ -61,6 +63,13 @@ std::uint8_t blendIndex(const CompositingMode* cm) {
     case CompositingMode::MODULATE_X2: return 4;
     default: return 0;
     }
+}
+
+std::uint8_t writeMask(const CompositingMode* cm) {
+    return static_cast<std::uint8_t>(
+        ((!cm || cm->isColorWriteEnabled()) ? (VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT)
+                                            : 0) |
+        ((!cm || cm->isAlphaWriteEnabled()) ? VK_COLOR_COMPONENT_A_BIT : 0));
 }
 
 std::int32_t texFunc(int blending) {
@@ -542,9 +551,7 @@ void Renderer::drawSubmesh(const detail::RenderQueue& queue, const detail::Rende
 
     PipelineKey key;
     key.blend = blendIndex(cm);
-    key.writeMask = static_cast<std::uint8_t>(
-        ((!cm || cm->isColorWriteEnabled()) ? (VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT) : 0) |
-        ((!cm || cm->isAlphaWriteEnabled()) ? VK_COLOR_COMPONENT_A_BIT : 0));
+    key.writeMask = writeMask(cm);
     key.samples = 1;
     bindPipeline(key);
     setDepthState(!cm || cm->isDepthTestEnabled(), !cm || cm->isDepthWriteEnabled(), cm ? cm->getDepthOffsetFactor() : 0.0f,
@@ -581,8 +588,39 @@ void Renderer::drawSubmesh(const detail::RenderQueue& queue, const detail::Rende
     ++ctx_->draws;
 }
 
-void Renderer::drawSprite(const detail::RenderQueue&, const detail::RenderItem&) {
-    // Sprites arrive with the sprite projection (scene/SpriteProjection).
+void Renderer::drawSprite(const detail::RenderQueue& queue, const detail::RenderItem& item) {
+    // Spec §5.10: a screen-aligned rectangle at the origin's depth showing
+    // crop ∩ image; the image acts as a texture (colour x alpha factor); only
+    // the CompositingMode and Fog of the Appearance apply.
+    const auto& sprite = static_cast<const Sprite3D&>(*item.node);
+    const detail::SpriteRect r =
+        detail::projectSprite(sprite, item.modelView, queue.projection, viewport_.w, viewport_.h);
+    if (!r.visible) return;
+    Image2D* image = sprite.getImage().get();
+    const TextureMirror& tex = resources_->texture(*image, false);
+    VkSampler sampler = resources_->sampler(Texture2D::WRAP_CLAMP, Texture2D::WRAP_CLAMP, Texture2D::FILTER_NEAREST,
+                                            Texture2D::FILTER_BASE_LEVEL);
+    VkDescriptorSet textures = resources_->textureSet(&tex, sampler, nullptr, VK_NULL_HANDLE);
+    VkDescriptorSet set;
+    std::uint32_t offset;
+    DrawUniforms& u = allocUniforms(set, offset);
+    u.texEnv[0][0] = TEX_MODULATE;
+    u.texEnv[0][1] = tex.hasColor;
+    u.texEnv[0][2] = tex.hasAlpha;
+    u.defaultColor[0] = u.defaultColor[1] = u.defaultColor[2] = u.defaultColor[3] = 1.0f;
+    const Appearance* app = item.appearance;
+    const CompositingMode* cm = app->getCompositingMode().get();
+    fillFog(u, app);
+    u.misc[0] = item.alphaFactor;
+    u.misc[1] = cm ? cm->getAlphaThreshold() : 0.0f;
+    u.misc[2] = r.eyeDepth;  // sprites are fogged at their origin's depth
+    PipelineKey key;
+    key.blend = blendIndex(cm);
+    key.writeMask = writeMask(cm);
+    const float ndc[4] = {r.x0, r.y0, r.x1, r.y1};
+    const float texRect[4] = {r.s0, r.t0, r.s1, r.t1};
+    drawQuad(u, set, offset, textures, key, !cm || cm->isDepthTestEnabled(), !cm || cm->isDepthWriteEnabled(), ndc,
+             r.ndcZ, texRect);
 }
 
 void Renderer::release(Graphics3D& g3d) {
