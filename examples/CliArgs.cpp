@@ -82,6 +82,8 @@ std::string usageText() {
            "  pick FILE X Y [--time T] [--json] [--lenient]\n"
            "            animate the World to T ms (default 0) and pick through its active\n"
            "            camera at viewport point (X, Y), (0, 0) top left, (1, 1) bottom right\n"
+           "  bench render FILE... [--size WxH] [--frames N]\n"
+           "            rendering speed: first frame, ms per frame, fps, CPU per draw, pipelines\n"
            "  version   print the library version\n"
            "  help      print this text\n";
 }

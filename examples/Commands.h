@@ -12,6 +12,8 @@ int cmdRender(std::span<const std::string_view> args);
 /// m3g compare A.png B.png [--threshold N] [--max-share S] [--min-psnr DB] [--diff OUT.png]
 int cmdCompare(std::span<const std::string_view> args);
 
+/// m3g bench render FILE... [--size WxH] [--frames N]
+int cmdBenchRender(std::span<const std::string_view> args);
 /// m3g sample -o OUT.m3g: writes the project's sample scene.
 int cmdSample(std::span<const std::string_view> args);
 

@@ -14,6 +14,8 @@
 //   m3g sample -o OUT.m3g         write the project's sample scene
 //   m3g pick FILE X Y [--time T] [--json] [--lenient]
 //                                 pick through the World's active camera
+//   m3g bench render FILE... [--size WxH] [--frames N]
+//                                 rendering speed (first frame, fps, CPU per draw)
 //   m3g version
 // Exit status: 0 success, 1 load/save failure (the IOException message on
 // stderr), 2 bad command line.
@@ -118,6 +120,8 @@ int main(int argc, char** argv) {
         if (command == "render") return m3gcli::cmdRender(rest);
         if (command == "compare") return m3gcli::cmdCompare(rest);
         if (command == "sample") return m3gcli::cmdSample(rest);
+        if (command == "bench" && !rest.empty() && rest[0] == "render")
+            return m3gcli::cmdBenchRender(std::span<const std::string_view>(rest).subspan(1));
     }
     m3gcli::CliArgs args;
     try {

@@ -32,9 +32,7 @@ bool backgroundMatches(const Graphics3D& g, const Background* background) {
 void collectWorldLights(const Node& node, const Transform& toWorld, std::vector<Graphics3D::LightEntry>& out) {
     if (!node.isRenderingEnabled()) return;
     if (auto* light = dynamic_cast<const Light*>(&node)) out.push_back({const_cast<Light*>(light), toWorld});
-    std::vector<Node*> children;
-    node.collectChildren(children);
-    for (Node* child : children) collectWorldLights(*child, toWorld * child->compositeTransform(), out);
+    detail::forEachChild(node, [&](Node& child) { collectWorldLights(child, toWorld * child.compositeTransform(), out); });
 }
 
 }  // namespace

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <string>
 
 #include <glm/glm.hpp>
 
@@ -128,7 +130,9 @@ Renderer::Renderer() : ctx_(Context::shared()) {
         ai.commandBufferCount = 1;
         check(vkAllocateCommandBuffers(ctx_->device(), &ai, &cmd_), "vkAllocateCommandBuffers");
     }
-    pipelines_->prewarm(1);
+    // Pipelines of the five blend modes before the first frame (M3G_VK_NO_PREWARM=1 skips it).
+    const char* noPrewarm = std::getenv("M3G_VK_NO_PREWARM");
+    if (!noPrewarm || std::string(noPrewarm) != "1") pipelines_->prewarm(1);
 }
 
 Renderer::~Renderer() {

@@ -45,9 +45,17 @@ void colorStream(const VertexArray* a, std::vector<float>& out) {
             out[v * 4 + k] = k < c ? static_cast<float>(a->value(v, k) & 0xFF) / 255.0f : 1.0f;
 }
 
-void push(std::vector<std::uint64_t>& sig, const Object3D* o) {
-    sig.push_back(o ? o->getObjectId() : 0);
-    sig.push_back(o ? o->getRevision() : 0);
+using Signature = std::array<std::uint64_t, 12>;
+
+/// Identity and revision of the VertexBuffer and its arrays.
+Signature signatureOf(const VertexBuffer& vb) {
+    Signature sig{};
+    const Object3D* parts[6] = {&vb, vb.positions(), vb.normals(), vb.colors(), vb.texCoords(0), vb.texCoords(1)};
+    for (int i = 0; i < 6; ++i) {
+        sig[i * 2] = parts[i] ? parts[i]->getObjectId() : 0;
+        sig[i * 2 + 1] = parts[i] ? parts[i]->getRevision() : 0;
+    }
+    return sig;
 }
 
 }  // namespace
@@ -111,14 +119,7 @@ const VertexMirror& ResourceCache::vertices(VertexBuffer& vb, const Mesh* mesh) 
     VertexEntry& e = vertices_[owner->getObjectId()];
     if (!e.owner.get()) e.owner = const_cast<Object3D*>(owner);
 
-    std::vector<std::uint64_t> sig;
-    sig.reserve(16);
-    push(sig, &vb);
-    push(sig, vb.positions());
-    push(sig, vb.normals());
-    push(sig, vb.colors());
-    push(sig, vb.texCoords(0));
-    push(sig, vb.texCoords(1));
+    const Signature sig = signatureOf(vb);
     if (!vb.positions())
         throw IllegalStateException("Graphics3D::render: the VertexBuffer has no positions (invalid vertex data)");
     const int n = vb.getVertexCount();
@@ -150,7 +151,7 @@ const VertexMirror& ResourceCache::vertices(VertexBuffer& vb, const Mesh* mesh) 
                 }
             }
             upload(e, s, n);
-            e.signature = std::move(sig);
+            e.signature = sig;
         }
         e.mirror.deformed = true;
     } else if (sig != e.signature || !e.mirror.buffer.buffer) {
@@ -171,7 +172,7 @@ const VertexMirror& ResourceCache::vertices(VertexBuffer& vb, const Mesh* mesh) 
                 s[3 + u] = &scratch_[3 + u];
             }
         upload(e, s, n);
-        e.signature = std::move(sig);
+        e.signature = sig;
         e.mirror.deformed = false;
     }
     e.lastFrame = frame_;

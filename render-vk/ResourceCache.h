@@ -76,7 +76,7 @@ public:
 private:
     struct VertexEntry {
         WeakRef<Object3D> owner;
-        std::vector<std::uint64_t> signature;
+        std::array<std::uint64_t, 12> signature{};
         VertexMirror mirror;
         std::unique_ptr<detail::MeshDeformer> deformer;
         std::uint64_t lastFrame = 0;

@@ -69,9 +69,7 @@ void RenderQueue::addLight(const Light& light, const Transform& lightToEye) {
 void RenderQueue::collectLights(const Node& root, const Transform& rootToEye) {
     if (!root.isRenderingEnabled()) return;
     if (const auto* light = dynamic_cast<const Light*>(&root)) addLight(*light, rootToEye);
-    std::vector<Node*> children;
-    root.collectChildren(children);
-    for (Node* child : children) collectLights(*child, rootToEye * child->compositeTransform());
+    forEachChild(root, [&](Node& child) { collectLights(child, rootToEye * child.compositeTransform()); });
 }
 
 void RenderQueue::collectNode(const Node& node, const Transform& nodeToEye, float alphaFactor) {
@@ -100,9 +98,7 @@ void RenderQueue::collectNode(const Node& node, const Transform& nodeToEye, floa
         }
     }
     // Children (Group) and a SkinnedMesh's skeleton render as part of the subtree.
-    std::vector<Node*> children;
-    node.collectChildren(children);
-    for (Node* child : children) collectNode(*child, nodeToEye * child->compositeTransform(), alpha);
+    forEachChild(node, [&](Node& child) { collectNode(child, nodeToEye * child.compositeTransform(), alpha); });
 }
 
 void RenderQueue::selectLights(RenderItem& item, int scope) const {

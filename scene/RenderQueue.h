@@ -22,6 +22,11 @@ class VertexBuffer;
 
 namespace m3g::detail {
 
+/// Calls `f(child)` for each child node of `node`: Group children and a
+/// SkinnedMesh's skeleton (as Node::collectChildren, without allocating).
+template <class F>
+void forEachChild(const Node& node, F&& f);
+
 /// A light in eye space, ready for the shader (spec §5.5).
 struct RenderLight {
     int mode = 0;                          ///< Light::AMBIENT ... SPOT
@@ -79,3 +84,15 @@ private:
 };
 
 }  // namespace m3g::detail
+
+#include <m3g/Group.h>
+#include <m3g/SkinnedMesh.h>
+
+template <class F>
+void m3g::detail::forEachChild(const Node& node, F&& f) {
+    if (const auto* group = dynamic_cast<const Group*>(&node)) {
+        for (int i = 0; i < group->getChildCount(); ++i) f(*group->childAt(i));
+    } else if (const auto* skinned = dynamic_cast<const SkinnedMesh*>(&node)) {
+        if (Group* skeleton = skinned->getSkeleton().get()) f(static_cast<Node&>(*skeleton));
+    }
+}

@@ -21,6 +21,8 @@ public:
     int getChildCount() const noexcept { return static_cast<int>(children_.size()); }
     /// IOOBE unless 0 <= index < getChildCount().
     Ref<Node> getChild(int index) const;
+    /// Child `index` without range check or reference count (engine use).
+    Node* childAt(int index) const noexcept { return children_[static_cast<std::size_t>(index)].get(); }
 
     /// Picks along the ray o + t d (this group's coordinates), spec digest
     /// §5.13. Candidates are the Meshes (MorphingMesh and SkinnedMesh on their

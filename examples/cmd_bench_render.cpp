@@ -1,0 +1,115 @@
+// m3g bench render: frames per second and CPU cost of rendering .m3g files
+// headless (the renderer issue's performance figures). Not a test: it prints.
+//
+//   m3g bench render FILE... [--size WxH] [--frames N]
+//
+// Per file: first-frame latency (a fresh renderer: pipeline and upload
+// work included), steady-state wall time and process CPU time per frame
+// (bind, render(World), releaseTarget with read-back), CPU time spent in
+// render(World) per draw (collect, clear, uploads if any, recording; the
+// frame is opened by a clear(null) before it), and pipelines created in steady
+// state (should be 0). M3G_VK_NO_PREWARM=1 skips pipeline pre-warming.
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <string>
+#include <vector>
+
+#include <m3g/m3g.h>
+#include <m3g/vk/Vulkan.h>
+
+#include "CliArgs.h"
+#include "Commands.h"
+#include "SceneSetup.h"
+
+namespace m3gcli {
+
+namespace {
+
+double cpuSeconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec) * 1e-9;
+}
+
+double wallSeconds() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace
+
+int cmdBenchRender(std::span<const std::string_view> args) {
+    std::vector<std::string> files;
+    int width = 320, height = 240, frames = 100;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        if (args[i] == "--size" && i + 1 < args.size()) {
+            const std::string_view v = args[++i];
+            const auto x = v.find('x');
+            auto w = x == std::string_view::npos ? std::nullopt : parseInt(v.substr(0, x));
+            auto h = x == std::string_view::npos ? std::nullopt : parseInt(v.substr(x + 1));
+            if (!w || !h || *w <= 0 || *h <= 0) {
+                std::fprintf(stderr, "m3g: bench render: --size takes WxH\n");
+                return 2;
+            }
+            width = *w;
+            height = *h;
+        } else if (args[i] == "--frames" && i + 1 < args.size()) {
+            auto n = parseInt(args[++i]);
+            if (!n || *n <= 0) {
+                std::fprintf(stderr, "m3g: bench render: --frames takes a positive integer\n");
+                return 2;
+            }
+            frames = *n;
+        } else if (!args[i].empty() && args[i][0] == '-') {
+            std::fprintf(stderr, "m3g: bench render: unknown option %s\n", std::string(args[i]).c_str());
+            return 2;
+        } else {
+            files.emplace_back(args[i]);
+        }
+    }
+    if (files.empty()) {
+        std::fprintf(stderr, "m3g: usage: m3g bench render FILE... [--size WxH] [--frames N]\n");
+        return 2;
+    }
+    m3g::Graphics3D* g = m3g::Graphics3D::getInstance();
+    std::printf("%dx%d, %d frames per file\n", width, height, frames);
+    std::printf("%-40s %7s %9s %9s %9s %8s %9s %6s\n", "file", "draws", "first ms", "ms/frame", "fps", "cpu ms", "us/draw", "pipes");
+    for (const std::string& file : files) {
+        try {
+            m3g::LoadResult loaded = m3g::Loader::loadDetailed(file);
+            PreparedScene scene = prepareScene(loaded, width, height);
+            scene.world->animate(0);
+            m3g::Ref<m3g::Graphics> target(new m3g::Graphics(width, height));
+            g->releaseRenderer();  // first frame from a fresh renderer
+            auto frame = [&](double* renderCpu) {
+                g->bindTarget(target.get(), true, 0);
+                g->clear(nullptr);  // opens the frame (target upload) outside the timed part
+                const double c0 = cpuSeconds();
+                g->render(scene.world.get());
+                if (renderCpu) *renderCpu += cpuSeconds() - c0;
+                g->releaseTarget();
+            };
+            const double f0 = wallSeconds();
+            frame(nullptr);
+            const double first = wallSeconds() - f0;
+            const auto before = m3g::vk::renderStats();
+            double renderCpu = 0.0;
+            const double w0 = wallSeconds(), c0 = cpuSeconds();
+            for (int i = 0; i < frames; ++i) frame(&renderCpu);
+            const double wall = (wallSeconds() - w0) / frames, cpu = (cpuSeconds() - c0) / frames;
+            const auto after = m3g::vk::renderStats();
+            const double draws = static_cast<double>(after.draws - before.draws) / frames;
+            std::string name = file.size() > 40 ? "..." + file.substr(file.size() - 37) : file;
+            std::printf("%-40s %7.0f %9.1f %9.2f %9.1f %8.2f %9.2f %6llu\n", name.c_str(), draws, first * 1e3, wall * 1e3,
+                        1.0 / wall, cpu * 1e3, draws > 0 ? renderCpu / frames / draws * 1e6 : 0.0,
+                        static_cast<unsigned long long>(after.pipelinesCreated - before.pipelinesCreated));
+        } catch (const std::exception& e) {
+            std::printf("%-40s error: %s\n", file.c_str(), e.what());
+        }
+    }
+    const auto info = m3g::vk::currentDevice();
+    std::printf("device: %s (%s)\n", info.name.c_str(), info.type.c_str());
+    return 0;
+}
+
+}  // namespace m3gcli
