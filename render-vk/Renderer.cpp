@@ -142,24 +142,38 @@ Renderer::~Renderer() {
     for (auto& c : chunks_) ctx_->destroy(c.buffer);
     vkDestroyDescriptorPool(device, uniformPool_, nullptr);
     ctx_->destroy(quads_);
+    for (Buffer& b : retiredQuads_) ctx_->destroy(b);
     ctx_->destroy(dummy_);
     ctx_->destroy(transfer_);
     ctx_->destroy(color_);
     ctx_->destroy(depth_);
+    ctx_->destroy(msaaColor_);
+    ctx_->destroy(initial_);
     vkDestroyFence(device, fence_, nullptr);
     std::lock_guard lock(ctx_->poolMutex());
     vkFreeCommandBuffers(device, ctx_->commandPool(), 1, &cmd_);
 }
 
-void Renderer::ensureTargetImages(std::uint32_t width, std::uint32_t height) {
-    if (color_.image && width_ == width && height_ == height) return;
+void Renderer::ensureTargetImages(std::uint32_t width, std::uint32_t height, VkSampleCountFlagBits samples) {
+    if (color_.image && width_ == width && height_ == height && samples_ == samples) return;
+    vkDeviceWaitIdle(ctx_->device());
+    resources_->forgetTextureSets();  // they may name initial_'s view
     ctx_->destroy(color_);
     ctx_->destroy(depth_);
     ctx_->destroy(transfer_);
+    ctx_->destroy(msaaColor_);
+    ctx_->destroy(initial_);
+    samples_ = samples;
     color_ = ctx_->createImage(width, height, VK_FORMAT_R8G8B8A8_UNORM,
                                VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                                    VK_IMAGE_USAGE_TRANSFER_DST_BIT);
-    depth_ = ctx_->createImage(width, height, ctx_->depthFormat(), VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
+    depth_ = ctx_->createImage(width, height, ctx_->depthFormat(), VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, 1, samples);
+    if (samples != VK_SAMPLE_COUNT_1_BIT) {
+        msaaColor_ = ctx_->createImage(width, height, VK_FORMAT_R8G8B8A8_UNORM, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, 1,
+                                       samples);
+        initial_ = ctx_->createImage(width, height, VK_FORMAT_R8G8B8A8_UNORM,
+                                     VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+    }
     transfer_ = ctx_->createHostBuffer(static_cast<VkDeviceSize>(width) * height * 4,
                                        VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     width_ = width;
@@ -169,9 +183,12 @@ void Renderer::ensureTargetImages(std::uint32_t width, std::uint32_t height) {
 void Renderer::begin(Graphics3D& g3d) {
     if (recording_) return;
     const auto w = static_cast<std::uint32_t>(g3d.targetWidth()), h = static_cast<std::uint32_t>(g3d.targetHeight());
-    ensureTargetImages(w, h);
+    // ANTIALIAS: multisampling when the device has it (spec §4.26 hints).
+    const bool antialias = (g3d.getHints() & Graphics3D::ANTIALIAS) != 0 && ctx_->maxSamples() != VK_SAMPLE_COUNT_1_BIT;
+    ensureTargetImages(w, h, antialias ? ctx_->maxSamples() : VK_SAMPLE_COUNT_1_BIT);
     hasDepth_ = g3d.isDepthBufferEnabled();
     const bool overwrite = (g3d.getHints() & Graphics3D::OVERWRITE) != 0;
+    const bool msaa = samples_ != VK_SAMPLE_COUNT_1_BIT;
 
     // The target's current pixels are the starting contents (unless OVERWRITE).
     if (!overwrite) {
@@ -203,7 +220,27 @@ void Renderer::begin(Graphics3D& g3d) {
     VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     check(vkBeginCommandBuffer(cmd_, &bi), "vkBeginCommandBuffer");
-    if (!overwrite) {
+    if (msaa) {
+        // Prior contents go to initial_, drawn into the multisampled image below.
+        if (!overwrite) {
+            barrier(cmd_, initial_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                    VK_ACCESS_2_TRANSFER_WRITE_BIT);
+            VkBufferImageCopy copy{};
+            copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+            copy.imageExtent = {w, h, 1};
+            vkCmdCopyBufferToImage(cmd_, transfer_.buffer, initial_.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+            barrier(cmd_, initial_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                    VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                    VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+        }
+        for (VkImage image : {color_.image, msaaColor_.image})
+            barrier(cmd_, image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
+                    VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                    VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    } else if (!overwrite) {
         barrier(cmd_, color_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
                 VK_ACCESS_2_TRANSFER_WRITE_BIT);
@@ -227,10 +264,15 @@ void Renderer::begin(Graphics3D& g3d) {
             VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
 
     VkRenderingAttachmentInfo colorAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    colorAttachment.imageView = color_.view;
+    colorAttachment.imageView = msaa ? msaaColor_.view : color_.view;
     colorAttachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    colorAttachment.loadOp = overwrite ? VK_ATTACHMENT_LOAD_OP_DONT_CARE : VK_ATTACHMENT_LOAD_OP_LOAD;
-    colorAttachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    colorAttachment.loadOp = (overwrite || msaa) ? VK_ATTACHMENT_LOAD_OP_DONT_CARE : VK_ATTACHMENT_LOAD_OP_LOAD;
+    colorAttachment.storeOp = msaa ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE;
+    if (msaa) {
+        colorAttachment.resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
+        colorAttachment.resolveImageView = color_.view;
+        colorAttachment.resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    }
     VkRenderingAttachmentInfo depthAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     depthAttachment.imageView = depth_.view;
     depthAttachment.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
@@ -245,6 +287,30 @@ void Renderer::begin(Graphics3D& g3d) {
     ri.pDepthAttachment = &depthAttachment;
     vkCmdBeginRendering(cmd_, &ri);
     recording_ = true;
+    if (msaa && !overwrite) {
+        // The prior contents, drawn over the whole target into every sample.
+        const VkViewport vp{0, 0, static_cast<float>(w), static_cast<float>(h), 0.0f, 1.0f};
+        vkCmdSetViewport(cmd_, 0, 1, &vp);
+        const VkRect2D sc{{0, 0}, {w, h}};
+        vkCmdSetScissor(cmd_, 0, 1, &sc);
+        TextureMirror prior;
+        prior.image = initial_;
+        VkSampler sampler = resources_->sampler(Texture2D::WRAP_CLAMP, Texture2D::WRAP_CLAMP, Texture2D::FILTER_NEAREST,
+                                                Texture2D::FILTER_BASE_LEVEL);
+        VkDescriptorSet textures = resources_->textureSet(&prior, sampler, nullptr, VK_NULL_HANDLE);
+        VkDescriptorSet set;
+        std::uint32_t offset;
+        DrawUniforms& u = allocUniforms(set, offset);
+        u.texEnv[0][0] = TEX_REPLACE;
+        u.texEnv[0][1] = u.texEnv[0][2] = 1;
+        u.defaultColor[0] = u.defaultColor[1] = u.defaultColor[2] = u.defaultColor[3] = 1.0f;
+        u.misc[0] = 1.0f;
+        u.misc[2] = -1.0f;
+        const float ndc[4] = {-1.0f, -1.0f, 1.0f, 1.0f};
+        const float tex[4] = {0.0f, 0.0f, 1.0f, 1.0f};
+        drawQuad(u, set, offset, textures, PipelineKey{0, 0xF, static_cast<std::uint8_t>(samples_)}, false, false, ndc, 0.0f,
+                 tex);
+    }
 }
 
 void Renderer::applyViewport(Graphics3D& g3d) {
@@ -393,13 +459,19 @@ void Renderer::clear(Graphics3D& g3d, const Background* background) {
     u.misc[0] = 1.0f;   // alpha factor
     u.misc[2] = -1.0f;  // no fixed fog depth
     const float ndc[4] = {-1.0f, -1.0f, 1.0f, 1.0f};
-    drawQuad(u, set, offset, textures, PipelineKey{0, 0xF, 1}, false, false, ndc, 0.0f, texRect);
+    drawQuad(u, set, offset, textures, PipelineKey{0, 0xF, static_cast<std::uint8_t>(samples_)}, false, false, ndc, 0.0f,
+             texRect);
 }
 
 void Renderer::drawQuad(DrawUniforms& u, VkDescriptorSet uniformSet, std::uint32_t offset, VkDescriptorSet textures,
                         const PipelineKey& key, bool depthTest, bool depthWrite, const float r[4], float z,
                         const float t[4]) {
-    if (quadOffset_ + kQuadBytes > quads_.size) return;  // more than 1024 quads in one frame: dropped
+    if (quadOffset_ + kQuadBytes > quads_.size) {
+        // A bigger ring; the full one stays alive until the frame is done.
+        retiredQuads_.push_back(quads_);
+        quads_ = ctx_->createHostBuffer(quads_.size * 2, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+        quadOffset_ = 0;
+    }
     identity(u.modelView);
     toColumns(vulkanProjection(Transform()), u.projection);
     identity(u.normalMatrix);
@@ -556,7 +628,7 @@ void Renderer::drawSubmesh(const detail::RenderQueue& queue, const detail::Rende
     PipelineKey key;
     key.blend = blendIndex(cm);
     key.writeMask = writeMask(cm);
-    key.samples = 1;
+    key.samples = static_cast<std::uint8_t>(samples_);
     bindPipeline(key);
     setDepthState(!cm || cm->isDepthTestEnabled(), !cm || cm->isDepthWriteEnabled(), cm ? cm->getDepthOffsetFactor() : 0.0f,
                   cm ? cm->getDepthOffsetUnits() : 0.0f);
@@ -621,6 +693,7 @@ void Renderer::drawSprite(const detail::RenderQueue& queue, const detail::Render
     PipelineKey key;
     key.blend = blendIndex(cm);
     key.writeMask = writeMask(cm);
+    key.samples = static_cast<std::uint8_t>(samples_);
     const float ndc[4] = {r.x0, r.y0, r.x1, r.y1};
     const float texRect[4] = {r.s0, r.t0, r.s1, r.t1};
     drawQuad(u, set, offset, textures, key, !cm || cm->isDepthTestEnabled(), !cm || cm->isDepthWriteEnabled(), ndc,
@@ -653,6 +726,8 @@ void Renderer::release(Graphics3D& g3d) {
     check(vkWaitForFences(ctx_->device(), 1, &fence_, VK_TRUE, UINT64_MAX), "vkWaitForFences (frame)");
     ++ctx_->frames;
     resources_->endFrame();
+    for (Buffer& b : retiredQuads_) ctx_->destroy(b);
+    retiredQuads_.clear();
 
     const auto* src = static_cast<const std::uint8_t*>(transfer_.mapped);
     const std::size_t n = static_cast<std::size_t>(width_) * height_;

@@ -43,7 +43,7 @@ private:
     };
 
     void begin(Graphics3D& g3d);
-    void ensureTargetImages(std::uint32_t width, std::uint32_t height);
+    void ensureTargetImages(std::uint32_t width, std::uint32_t height, VkSampleCountFlagBits samples);
     void applyViewport(Graphics3D& g3d);
     DrawUniforms& allocUniforms(VkDescriptorSet& set, std::uint32_t& offset);
     void drawSubmesh(const detail::RenderQueue& queue, const detail::RenderItem& item);
@@ -62,7 +62,9 @@ private:
     std::unique_ptr<ResourceCache> resources_;
 
     // The bound target's images and the frame being recorded.
-    Image color_, depth_;
+    Image color_, depth_;      // single-sampled colour (read back) and depth
+    Image msaaColor_, initial_;  // ANTIALIAS: multisampled colour and the prior contents to start from
+    VkSampleCountFlagBits samples_ = VK_SAMPLE_COUNT_1_BIT;
     std::uint32_t width_ = 0, height_ = 0;
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;
@@ -80,6 +82,7 @@ private:
     std::uint32_t uniformStride_ = 0;
     VkDescriptorPool uniformPool_ = VK_NULL_HANDLE;
     Buffer quads_;
+    std::vector<Buffer> retiredQuads_;
     VkDeviceSize quadOffset_ = 0;
     Buffer dummy_;
 

@@ -359,6 +359,13 @@ VkDescriptorSet ResourceCache::textureSet(const TextureMirror* t0, VkSampler s0,
     return set;
 }
 
+void ResourceCache::forgetTextureSets() {
+    sets_.clear();
+    for (VkDescriptorPool p : pools_) vkDestroyDescriptorPool(ctx_.device(), p, nullptr);
+    pools_.clear();
+    poolUsed_ = 0;
+}
+
 void ResourceCache::endFrame() {
     // Mirrors of objects that no longer exist.
     for (auto it = vertices_.begin(); it != vertices_.end();)
@@ -371,10 +378,7 @@ void ResourceCache::endFrame() {
     retiredBuffers_.clear();
     if (!retiredImages_.empty()) {
         // Descriptor sets may name the freed views: start the set cache afresh.
-        sets_.clear();
-        for (VkDescriptorPool p : pools_) vkDestroyDescriptorPool(ctx_.device(), p, nullptr);
-        pools_.clear();
-        poolUsed_ = 0;
+        forgetTextureSets();
         for (Image& i : retiredImages_) ctx_.destroy(i);
         retiredImages_.clear();
     }

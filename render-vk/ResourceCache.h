@@ -67,6 +67,8 @@ public:
     /// Called when the GPU has finished all submitted work: frees replaced
     /// mirrors and those of objects that no longer exist.
     void endFrame();
+    /// Drops every cached texture descriptor set (the GPU must be idle).
+    void forgetTextureSets();
     /// Called when a new frame starts recording.
     void beginFrame() noexcept { ++frame_; }
 

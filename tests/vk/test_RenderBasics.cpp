@@ -101,3 +101,33 @@ TEST_F(VkTest, BackFaceCulledByDefault) {
     g->releaseTarget();
     EXPECT_NE(pixel(*img, 30, 17) & 0xFFFFFF, 0u);
 }
+
+TEST_F(VkTest, AntialiasSmoothsEdgesAndKeepsPriorContents) {
+    // With ANTIALIAS the diagonal edge of the triangle gets intermediate
+    // colours (multisampling), and pixels outside it keep the target's
+    // previous contents.
+    Triangle t = makeTriangle(false);
+    Ref<Appearance> app(new Appearance());
+    Ref<Camera> cam(new Camera());
+    Graphics3D* g = Graphics3D::getInstance();
+    auto countPartial = [&](int hints) {
+        auto img = target(32, 32, 0xFF0000FFu);  // opaque blue
+        g->bindTarget(img.get(), true, hints);
+        g->setCamera(cam.get(), nullptr);
+        g->render(t.vb.get(), t.ib.get(), app.get(), nullptr);  // white triangle (default colour)
+        g->releaseTarget();
+        int partial = 0;
+        for (int y = 0; y < 32; ++y)
+            for (int x = 0; x < 32; ++x) {
+                const std::uint32_t red = (pixel(*img, x, y) >> 16) & 0xFF;
+                partial += red > 10 && red < 245;
+            }
+        EXPECT_EQ(pixel(*img, 31, 0), 0xFF0000FFu);  // untouched corner keeps the prior colour
+        return partial;
+    };
+    EXPECT_EQ(countPartial(0), 0);
+    if (m3g::Graphics3D::getProperties().at("supportAntialiasing") == m3g::Graphics3D::Property(true))
+        EXPECT_GT(countPartial(Graphics3D::ANTIALIAS), 10);
+    else
+        GTEST_SKIP() << "device without multisampling";
+}
