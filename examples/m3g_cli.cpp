@@ -15,6 +15,7 @@
 //   m3g pick FILE X Y [--time T] [--json] [--lenient]
 //                                 pick through the World's active camera
 //   m3g version
+//   m3g bench skin|morph [...]  kernel benchmarks (examples/cmd_bench.cpp)
 // Exit status: 0 success, 1 load/save failure (the IOException message on
 // stderr), 2 bad command line.
 #include <cstdio>
@@ -29,6 +30,7 @@
 #include "CliArgs.h"
 #include "Commands.h"
 #include "ObjectDump.h"
+#include "cmd_bench.h"
 #include "cmd_pick.h"
 
 namespace {
@@ -118,6 +120,7 @@ int main(int argc, char** argv) {
         if (command == "render") return m3gcli::cmdRender(rest);
         if (command == "compare") return m3gcli::cmdCompare(rest);
         if (command == "sample") return m3gcli::cmdSample(rest);
+        if (command == "bench") return m3gcli::benchCommand(argc - 2, argv + 2);
     }
     m3gcli::CliArgs args;
     try {
