@@ -67,9 +67,13 @@ void printHeader(const char* first, const char* second, const char* third) {
     std::printf(" %8s %9s\n", "best", "speed-up");
 }
 
-/// Prints one row: ns per vertex per variant (negative = not run).
+/// Prints one row: ns per vertex per variant (negative = not run); a
+/// negative `b` leaves its column empty.
 void printRow(std::size_t vertices, int a, int b, const double (&ns)[5]) {
-    std::printf("%9zu %6d %6d", vertices, a, b);
+    if (b >= 0)
+        std::printf("%9zu %6d %6d", vertices, a, b);
+    else
+        std::printf("%9zu %6d %6s", vertices, a, "");
     double best = -1;
     int bestIndex = -1;
     for (int i = 0; i < 5; ++i) {
@@ -153,7 +157,7 @@ int benchMorph(const BenchOptions& o) {
                 }
                 ns[i] = secondsPerFrame([&] { w.frame(var, &pool); }, o.seconds) * 1e9 / static_cast<double>(v);
             }
-            printRow(v, t, 0, ns);
+            printRow(v, t, -1, ns);
         }
     return 0;
 }

@@ -12,6 +12,9 @@ namespace m3g::skin::detail {
 
 /// Listed vertices [begin, end) of `job` (job.vertices indices).
 void skinScalar(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept;
+/// Vertex v of `job` by the plain formula, skipping slots whose bone index is
+/// outside the palette: the SIMD paths' fallback for such vertices.
+void skinVertexChecked(const SkinningJob& job, std::size_t v) noexcept;
 /// Elements [begin, end) of `job` (float indices into base/output); with
 /// job.normalize, begin and end are multiples of 3.
 void morphScalar(const MorphJob& job, std::size_t begin, std::size_t end) noexcept;
@@ -22,6 +25,10 @@ void skinSse2(const SkinningJob& job, std::size_t begin, std::size_t end) noexce
 void skinAvx2(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept;
 void morphSse2(const MorphJob& job, std::size_t begin, std::size_t end) noexcept;
 void morphAvx2(const MorphJob& job, std::size_t begin, std::size_t end) noexcept;
+/// Renormalises `triples` xyz triples in place, 4 (8) lanes at a time; every
+/// triple goes through the same lane operations (partial blocks are padded).
+void normalizeSse2(float* xyz, std::size_t triples) noexcept;
+void normalizeAvx2(float* xyz, std::size_t triples) noexcept;
 #endif
 
 /// x / |x| for an xyz triple in place (each component divided by the

@@ -1,5 +1,7 @@
 #include <m3g/skin/Skinning.h>
 
+#include <algorithm>
+
 #include <m3g/skin/ThreadPool.h>
 
 #include "Kernels.h"
@@ -35,20 +37,29 @@ bool SkinningJob::validate() const noexcept {
     if (!inNormals.empty() && (!holds(inNormals, vertexCount, inNormalStride) ||
                                !holds(std::span<const float>(outNormals), vertexCount, outNormalStride)))
         return false;
-    const auto stride = static_cast<std::size_t>(influenceStride);
-    const auto count = static_cast<std::size_t>(influenceCount);
-    const std::size_t bones = palette.size();
-    for (const std::uint32_t v : vertices) {
-        if (v >= vertexCount) return false;
-        if (count == 0) continue;
-        const std::size_t base = static_cast<std::size_t>(v) * stride;
-        if (base + count > boneIndices.size() || base + count > boneWeights.size()) return false;
-        for (std::size_t k = 0; k < count; ++k) {
-            const std::int32_t b = boneIndices[base + k];
-            if (b < 0 || static_cast<std::size_t>(b) >= bones) return false;
-        }
+    if (vertices.empty()) return true;
+    // Every listed vertex must be below `limit`: the vertex count, and the
+    // number of vertices the influence arrays reach. One pass, branch-free.
+    std::size_t limit = vertexCount;
+    if (influenceCount > 0) {
+        const auto stride = static_cast<std::size_t>(influenceStride);
+        const auto count = static_cast<std::size_t>(influenceCount);
+        const std::size_t size = std::min(boneIndices.size(), boneWeights.size());
+        limit = size < count ? 0 : std::min(limit, (size - count) / stride + 1);
     }
-    return true;
+    const std::uint64_t bound = limit;
+    const std::uint32_t* v = vertices.data();
+    const std::size_t n = vertices.size();
+    bool bad0 = false, bad1 = false, bad2 = false, bad3 = false;
+    std::size_t i = 0;
+    for (; i + 4 <= n; i += 4) {
+        bad0 |= v[i] >= bound;
+        bad1 |= v[i + 1] >= bound;
+        bad2 |= v[i + 2] >= bound;
+        bad3 |= v[i + 3] >= bound;
+    }
+    for (; i < n; ++i) bad0 |= v[i] >= bound;
+    return !(bad0 | bad1 | bad2 | bad3);
 }
 
 bool SkinningJob::run() const noexcept {
@@ -113,65 +124,72 @@ namespace detail {
 
 namespace {
 
+/// One vertex by the formula. Slots whose bone index is outside the palette
+/// (-1 = empty, or garbage) contribute nothing.
+template <bool Normals>
+inline void skinOne(const SkinningJob& j, std::size_t v, int count) noexcept {
+    const float* ip = j.inPositions.data() + v * j.inPositionStride;
+    float* op = j.outPositions.data() + v * j.outPositionStride;
+    const float s = j.positionScale;
+    const float px = s * ip[0] + j.positionBias[0], py = s * ip[1] + j.positionBias[1],
+                pz = s * ip[2] + j.positionBias[2];
+    const float* in = Normals ? j.inNormals.data() + v * j.inNormalStride : nullptr;
+    float* on = Normals ? j.outNormals.data() + v * j.outNormalStride : nullptr;
+    if (count == 0) {
+        op[0] = px;
+        op[1] = py;
+        op[2] = pz;
+        if constexpr (Normals) {
+            float n[3] = {in[0], in[1], in[2]};
+            normalize3(n);
+            on[0] = n[0];
+            on[1] = n[1];
+            on[2] = n[2];
+        }
+        return;
+    }
+    const std::size_t base = v * static_cast<std::size_t>(j.influenceStride);
+    const std::int32_t* bi = j.boneIndices.data() + base;
+    const float* bw = j.boneWeights.data() + base;
+    const std::size_t bones = j.palette.size();
+    // Blend the matrices, then apply the blend once.
+    float m[12] = {}, nm[12] = {};
+    for (int k = 0; k < count; ++k) {
+        const auto b = static_cast<std::uint32_t>(bi[k]);
+        if (b >= bones) continue;
+        const PaletteEntry& e = j.palette[b];
+        const float w = bw[k];
+        for (int r = 0; r < 12; ++r) m[r] += w * e.position[r];
+        if constexpr (Normals)
+            for (int r = 0; r < 12; ++r) nm[r] += w * e.normal[r];
+    }
+    for (int r = 0; r < 3; ++r) op[r] = m[r * 4] * px + m[r * 4 + 1] * py + m[r * 4 + 2] * pz + m[r * 4 + 3];
+    if constexpr (Normals) {
+        float n[3];
+        for (int r = 0; r < 3; ++r) n[r] = nm[r * 4] * in[0] + nm[r * 4 + 1] * in[1] + nm[r * 4 + 2] * in[2];
+        normalize3(n);
+        on[0] = n[0];
+        on[1] = n[1];
+        on[2] = n[2];
+    }
+}
+
 template <int K, bool Normals>
 void skinScalarT(const SkinningJob& j, std::size_t begin, std::size_t end) noexcept {
     const int count = K >= 0 ? K : j.influenceCount;
-    const auto stride = static_cast<std::size_t>(j.influenceStride);
-    const float s = j.positionScale;
-    const float bx = j.positionBias[0], by = j.positionBias[1], bz = j.positionBias[2];
-    const PaletteEntry* palette = j.palette.data();
-    for (std::size_t i = begin; i < end; ++i) {
-        const std::size_t v = j.vertices[i];
-        const float* ip = j.inPositions.data() + v * j.inPositionStride;
-        float* op = j.outPositions.data() + v * j.outPositionStride;
-        const float px = s * ip[0] + bx, py = s * ip[1] + by, pz = s * ip[2] + bz;
-        if constexpr (K == 0) {
-            op[0] = px;
-            op[1] = py;
-            op[2] = pz;
-            if constexpr (Normals) {
-                const float* in = j.inNormals.data() + v * j.inNormalStride;
-                float* on = j.outNormals.data() + v * j.outNormalStride;
-                float n[3] = {in[0], in[1], in[2]};
-                normalize3(n);
-                on[0] = n[0];
-                on[1] = n[1];
-                on[2] = n[2];
-            }
-            continue;
-        } else {
-            const std::int32_t* bi = j.boneIndices.data() + v * stride;
-            const float* bw = j.boneWeights.data() + v * stride;
-            // Blend the matrices, then apply the blend once.
-            float m[12], nm[12];
-            {
-                const PaletteEntry& e = palette[bi[0]];
-                const float w = bw[0];
-                for (int r = 0; r < 12; ++r) m[r] = w * e.position[r];
-                if constexpr (Normals)
-                    for (int r = 0; r < 12; ++r) nm[r] = w * e.normal[r];
-            }
-            for (int k = 1; k < count; ++k) {
-                const PaletteEntry& e = palette[bi[k]];
-                const float w = bw[k];
-                for (int r = 0; r < 12; ++r) m[r] += w * e.position[r];
-                if constexpr (Normals)
-                    for (int r = 0; r < 12; ++r) nm[r] += w * e.normal[r];
-            }
-            for (int r = 0; r < 3; ++r) op[r] = m[r * 4] * px + m[r * 4 + 1] * py + m[r * 4 + 2] * pz + m[r * 4 + 3];
-            if constexpr (Normals) {
-                const float* in = j.inNormals.data() + v * j.inNormalStride;
-                float* on = j.outNormals.data() + v * j.outNormalStride;
-                float n[3];
-                for (int r = 0; r < 3; ++r) n[r] = nm[r * 4] * in[0] + nm[r * 4 + 1] * in[1] + nm[r * 4 + 2] * in[2];
-                normalize3(n);
-                on[0] = n[0];
-                on[1] = n[1];
-                on[2] = n[2];
-            }
-        }
-    }
+    for (std::size_t i = begin; i < end; ++i) skinOne<Normals>(j, j.vertices[i], count);
 }
+
+}  // namespace
+
+void skinVertexChecked(const SkinningJob& job, std::size_t v) noexcept {
+    if (job.inNormals.empty())
+        skinOne<false>(job, v, job.influenceCount);
+    else
+        skinOne<true>(job, v, job.influenceCount);
+}
+
+namespace {
 
 template <bool Normals>
 void skinScalarN(const SkinningJob& j, std::size_t begin, std::size_t end) noexcept {

@@ -168,6 +168,13 @@ TEST(MorphJob, EveryPathAgreesWithDoublePrecision) {
         for (std::size_t k = 0; k < t.size(); ++k) acc += double(weights[k]) * (double(t[k][i]) - double(b[i]));
         ref[i] = acc;
     }
+    // The same blend renormalised per xyz triple (1001 triples: full blocks
+    // and a partial one on every path).
+    std::vector<double> unit(ref);
+    for (std::size_t v = 0; v < n; v += 3) {
+        const double len = std::sqrt(ref[v] * ref[v] + ref[v + 1] * ref[v + 1] + ref[v + 2] * ref[v + 2]);
+        for (int c = 0; c < 3; ++c) unit[v + c] = ref[v + c] / len;
+    }
     for (Isa isa : kPaths) {
         if (!isaSupported(isa)) continue;
         Morph m(b, t, weights);
@@ -175,6 +182,10 @@ TEST(MorphJob, EveryPathAgreesWithDoublePrecision) {
         ASSERT_TRUE(m.job.run());
         for (std::size_t i = 0; i < n; ++i)
             ASSERT_NEAR(m.out[i], ref[i], 1e-5 * std::max(100.0, std::abs(ref[i]))) << isaName(isa) << " element " << i;
+        m.job.normalize = true;
+        ASSERT_TRUE(m.job.run());
+        for (std::size_t i = 0; i < n; ++i)
+            ASSERT_NEAR(m.out[i], unit[i], 1e-5) << isaName(isa) << " normalised element " << i;
     }
 }
 

@@ -128,12 +128,26 @@ TEST(SkinningJob, ValidateRejectsBadCountsAndIndices) {
         EXPECT_FALSE(f.job.validate());
     }
     {
-        OneVertex f({translation(1, 2, 3)}, {{1, 1.0f}});  // bone 1 of a 1-bone palette
+        // Influence arrays that do not reach the listed vertex 1 (stride 4:
+        // vertex 1 needs 4 + 1 values).
+        OneVertex f({translation(1, 2, 3)}, {{0, 1.0f}});
+        f.in.resize(6);
+        f.out.resize(6);
+        f.nin.resize(6);
+        f.nout.resize(6);
+        f.list = {0, 1};
+        f.job.vertices = f.list;
+        f.job.vertexCount = 2;
+        f.job.inPositions = f.in;
+        f.job.outPositions = f.out;
+        f.job.inNormals = f.nin;
+        f.job.outNormals = f.nout;
         EXPECT_FALSE(f.job.validate());
-    }
-    {
-        OneVertex f({translation(1, 2, 3)}, {{0, 0.5f}, {-1, 0.5f}});  // empty slot used
-        EXPECT_FALSE(f.job.validate());
+        f.bones.resize(5, 0);
+        f.weights.resize(5, 1.0f);
+        f.job.boneIndices = f.bones;
+        f.job.boneWeights = f.weights;
+        EXPECT_TRUE(f.job.validate());
     }
     {
         OneVertex f({translation(1, 2, 3)}, {{0, 1.0f}});
@@ -287,6 +301,45 @@ TEST_P(SkinningPaths, ZeroNormalStaysZeroAndNormalsAreOptional) {
     f.nout = {7, 7, 7};
     ASSERT_TRUE(f.run(GetParam(), {0, 1, 0}, {0, 0, 0}));
     expectXyz(f.out, -1, 0, 0, "position without normals");
+}
+
+TEST_P(SkinningPaths, OutOfRangeBoneIndicesContributeNothing) {
+    SKIP_IF_UNSUPPORTED(GetParam());
+    // Three vertices with two slots each (stride 2), all at (1, 0, 0) with
+    // normal (0, 0, 1). Palette: T(1, 0, 0), T(0, 2, 0).
+    //  v0: (0, 0.5) (1, 0.5)       -> (1,0,0) + 0.5 (1,0,0) + 0.5 (0,2,0) = (1.5, 1, 0)
+    //  v1: (0, 0.5) (-1, 0.5)      -> only bone 0 counts: 0.5 (2, 0, 0) = (1, 0, 0)
+    //  v2: (7, 0.25) (1, 0.75)     -> only bone 1 counts: 0.75 (1, 2, 0) = (0.75, 1.5, 0)
+    // The SIMD paths take a checked fallback for v1 and v2; v0 shares their
+    // normal batch and is unaffected.
+    const auto pal = palette({translation(1, 0, 0), translation(0, 2, 0)});
+    std::vector<float> pin{1, 0, 0, 1, 0, 0, 1, 0, 0}, nin{0, 0, 1, 0, 0, 1, 0, 0, 1};
+    std::vector<float> pout(9, 9.0f), nout(9, 9.0f);
+    std::vector<std::int32_t> bones{0, 1, 0, -1, 7, 1};
+    std::vector<float> weights{0.5f, 0.5f, 0.5f, 0.5f, 0.25f, 0.75f};
+    std::vector<std::uint32_t> list{0, 1, 2};
+    SkinningJob job;
+    job.vertices = list;
+    job.vertexCount = 3;
+    job.influenceCount = 2;
+    job.influenceStride = 2;
+    job.boneIndices = bones;
+    job.boneWeights = weights;
+    job.palette = pal;
+    job.inPositions = pin;
+    job.inNormals = nin;
+    job.outPositions = pout;
+    job.outNormals = nout;
+    job.isa = GetParam();
+    ASSERT_TRUE(job.validate());
+    ASSERT_TRUE(job.run());
+    const std::vector<float> expected{1.5f, 1, 0, 1, 0, 0, 0.75f, 1.5f, 0};
+    for (int i = 0; i < 9; ++i) EXPECT_NEAR(pout[i], expected[i], 1e-6f) << "position float " << i;
+    for (int i = 0; i < 9; ++i) EXPECT_NEAR(nout[i], i % 3 == 2 ? 1.0f : 0.0f, 1e-6f) << "normal float " << i;
+    // A palette with no entries: no slot counts, the positions collapse to 0.
+    job.palette = {};
+    ASSERT_TRUE(job.run());
+    for (int i = 0; i < 9; ++i) EXPECT_EQ(pout[i], 0.0f) << "empty palette, float " << i;
 }
 
 TEST_P(SkinningPaths, StridesListedVerticesOnlyAndPaddingUntouched) {

@@ -36,7 +36,9 @@ struct SkinningJob {
     /// Slot k of vertex v is at [v * influenceStride + k] in boneIndices and
     /// boneWeights (InfluenceTable's layout: influenceStride = N).
     int influenceStride = 0;
-    /// Bone (palette) index per slot; must be < palette.size() for used slots.
+    /// Bone (palette) index per slot. A used slot whose index is outside the
+    /// palette (-1 = empty, or anything else out of range) contributes
+    /// nothing: run() never reads outside the palette.
     std::span<const std::int32_t> boneIndices;
     /// Weight per slot, already normalised (the kernel does not divide).
     std::span<const float> boneWeights;
@@ -61,11 +63,13 @@ struct SkinningJob {
     /// Which code path runs; an unsupported one makes validate() false.
     Isa isa = Isa::Auto;
 
-    /// Checks sizes and strides (every per-vertex array holds vertexCount
-    /// vertices at its stride; influence arrays vertexCount * stride values;
-    /// normals both present or both absent; influenceCount <= stride) and
-    /// scans the vertex list and the used bone indices for out-of-range
-    /// values. O(listed vertices x influenceCount).
+    /// Checks sizes and strides: every per-vertex array holds vertexCount
+    /// vertices at its stride (strides >= 3), normals are both present or
+    /// both absent, influenceCount <= influenceStride, the influence arrays
+    /// reach the listed vertices, every listed vertex is < vertexCount (one
+    /// max reduction over the list) and the ISA is supported. The bone
+    /// indices are not scanned (see boneIndices). Like ozz-animation, cheap
+    /// enough to run on every call.
     bool validate() const noexcept;
     /// validate(), then skins every listed vertex. Returns validate().
     bool run() const noexcept;
