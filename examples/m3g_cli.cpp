@@ -17,6 +17,7 @@
 //   m3g bench render FILE... [--size WxH] [--frames N]
 //                                 rendering speed (first frame, fps, CPU per draw)
 //   m3g version
+//   m3g bench skin|morph [...]  kernel benchmarks (examples/cmd_bench.cpp)
 // Exit status: 0 success, 1 load/save failure (the IOException message on
 // stderr), 2 bad command line.
 #include <cstdio>
@@ -31,6 +32,7 @@
 #include "CliArgs.h"
 #include "Commands.h"
 #include "ObjectDump.h"
+#include "cmd_bench.h"
 #include "cmd_pick.h"
 
 namespace {
@@ -122,6 +124,7 @@ int main(int argc, char** argv) {
         if (command == "sample") return m3gcli::cmdSample(rest);
         if (command == "bench" && !rest.empty() && rest[0] == "render")
             return m3gcli::cmdBenchRender(std::span<const std::string_view>(rest).subspan(1));
+        if (command == "bench") return m3gcli::benchCommand(argc - 2, argv + 2);
     }
     m3gcli::CliArgs args;
     try {

@@ -1,130 +1,79 @@
-// Reference deformation (plain loops, no change detection): correct first;
-// the skinning issue replaces the inner loops with skin/ kernels.
+// Deformation of SkinnedMesh and MorphingMesh vertices with the skin/
+// kernels, recomputed only when an input changed (architecture guide §6).
+//
+// Change detection compares exactly what the result is made of:
+//  - the VertexBuffers and VertexArrays read (object id and revision: a
+//    replaced array has a new id, an edited one a new revision);
+//  - SkinnedMesh: the influence table's revision (every addTransform) and the
+//    bone palette, recomputed each call from the bones' current transforms and
+//    compared with the previous one: a bone moves through any node between it
+//    and the mesh (animate, setTranslation, setTransform...), so comparing the
+//    matrices is both simpler and exact where tracking revisions along every
+//    path would not be;
+//  - MorphingMesh: the weights (values, bit for bit).
+// The mesh's own revision is deliberately not used: it also changes with its
+// node transform and appearances, which do not change the deformed vertices.
 #include "MeshDeformer.h"
 
 #include <algorithm>
-#include <cmath>
+#include <cstring>
 
 #include <m3g/MorphingMesh.h>
 #include <m3g/SkinnedMesh.h>
 #include <m3g/VertexArray.h>
 #include <m3g/VertexBuffer.h>
+#include <m3g/skin/Morph.h>
+#include <m3g/skin/ThreadPool.h>
 
 #include "Check.h"
-#include "MathUtil.h"
 
 namespace m3g::detail {
 
 namespace {
 
+/// Meshes with at least this many vertices are deformed on the shared
+/// thread pool, in chunks of kGrain vertices.
+constexpr std::size_t kParallelVertices = 16384;
+constexpr std::size_t kGrain = 4096;
+
 /// Raw values of `array` as floats (componentCount per vertex).
-std::vector<float> rawFloats(const VertexArray* array) {
-    std::vector<float> out(static_cast<std::size_t>(array->getVertexCount()) * array->getComponentCount());
+void rawFloats(const VertexArray* array, std::vector<float>& out) {
+    out.resize(static_cast<std::size_t>(array->getVertexCount()) * array->getComponentCount());
     array->getFloats(0, array->getVertexCount(), out);
-    return out;
 }
 
-/// Positions with scale and bias applied, xyz per vertex.
-void scaledPositions(const VertexBuffer& vb, std::vector<float>& out) {
-    const VertexArray* p = vb.positions();
-    const int n = vb.getVertexCount();
-    out.assign(static_cast<std::size_t>(n) * 3, 0.0f);
-    if (!p) return;
-    const float s = vb.positionScale();
-    const auto& b = vb.positionBias();
-    for (int v = 0; v < n; ++v)
-        for (int c = 0; c < 3; ++c) out[v * 3 + c] = s * static_cast<float>(p->value(v, c)) + b[c];
-}
-
-/// Normals as floats with the GL signed-integer mapping (2c + 1) / (2^bits - 1).
+/// Normals as floats with the GL signed-integer mapping (2c + 1) / (2^bits - 1);
+/// empty when there is no array.
 void floatNormals(const VertexArray* array, std::vector<float>& out) {
     out.clear();
     if (!array) return;
     const float range = array->getComponentType() == 1 ? 255.0f : 65535.0f;
-    const int n = array->getVertexCount();
-    out.resize(static_cast<std::size_t>(n) * 3);
-    for (int v = 0; v < n; ++v)
-        for (int c = 0; c < 3; ++c) out[v * 3 + c] = (2.0f * static_cast<float>(array->value(v, c)) + 1.0f) / range;
+    rawFloats(array, out);
+    for (float& c : out) c = (2.0f * c + 1.0f) / range;
 }
 
-void normalize3(float* n) {
-    const float len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    if (len > 0.0f)
-        for (int c = 0; c < 3; ++c) n[c] /= len;
+/// Positions with the given scale and bias applied (the base's, for morph
+/// targets too), xyz per vertex.
+void scaledPositions(const VertexArray* array, float scale, const std::array<float, 3>& bias, std::vector<float>& out) {
+    rawFloats(array, out);
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = scale * out[i] + bias[i % 3];
 }
 
-void skin(const SkinnedMesh& mesh, DeformedVertices& out) {
-    const VertexBuffer& vb = *mesh.getVertexBuffer();
+/// Colours as RGBA in [0, 1] per vertex (RGB arrays get alpha 1; no array:
+/// the default colour for every vertex).
+void unitColors(const VertexBuffer& vb, std::vector<float>& out) {
     const int n = vb.getVertexCount();
-    std::vector<float> base, baseNormals;
-    scaledPositions(vb, base);
-    floatNormals(vb.normals(), baseNormals);
-
-    // One palette entry per bone: (bone -> mesh now) x at-rest, and the
-    // inverse transpose of its upper 3x3 for normals (spec §5.11).
-    std::vector<glm::mat4> palette(mesh.boneCount());
-    std::vector<glm::mat3> normalPalette(mesh.boneCount());
-    for (int b = 0; b < mesh.boneCount(); ++b) {
-        Transform boneToMesh;
-        mesh.bone(b)->getTransformTo(&mesh, &boneToMesh);
-        palette[b] = toGlm(boneToMesh) * toGlm(mesh.atRestTransform(b));
-        normalPalette[b] = glm::transpose(glm::inverse(glm::mat3(palette[b])));
-    }
-
-    const skin::InfluenceTable& table = mesh.influenceTable();
-    out.positions = base;
-    out.normals = baseNormals;
-    const int skinned = std::min(n, table.vertexCount());
-    for (int v = 0; v < skinned; ++v) {
-        const int count = table.count(v);
-        if (count == 0) continue;  // no influence: stays in mesh space (Nokia)
-        glm::vec3 p(0.0f), nn(0.0f);
-        const glm::vec4 src(base[v * 3], base[v * 3 + 1], base[v * 3 + 2], 1.0f);
-        for (int k = 0; k < count; ++k) {
-            const int bone = table.bone(v, k);
-            const float w = table.weight(v, k);
-            p += w * glm::vec3(palette[bone] * src);
-            if (!baseNormals.empty())
-                nn += w * (normalPalette[bone] *
-                           glm::vec3(baseNormals[v * 3], baseNormals[v * 3 + 1], baseNormals[v * 3 + 2]));
-        }
-        for (int c = 0; c < 3; ++c) out.positions[v * 3 + c] = p[c];
-        if (!baseNormals.empty()) {
-            for (int c = 0; c < 3; ++c) out.normals[v * 3 + c] = nn[c];
-            normalize3(&out.normals[v * 3]);
-        }
-    }
-    out.colors.clear();
-    for (auto& t : out.texCoords) t.clear();
-    out.texCoordComponents.fill(0);
-}
-
-/// B + sum_i w_i (T_i - B) over equally long float arrays.
-void morphArrays(const std::vector<float>& base, const std::vector<std::vector<float>>& targets,
-                 std::span<const float> weights, std::vector<float>& out) {
-    out = base;
-    for (std::size_t t = 0; t < targets.size(); ++t) {
-        const float w = weights[t];
-        if (w == 0.0f) continue;
-        for (std::size_t i = 0; i < out.size(); ++i) out[i] += w * (targets[t][i] - base[i]);
-    }
-}
-
-/// Colours as unsigned bytes 0..255 (RGBA per vertex; RGB arrays get 255).
-std::vector<float> byteColors(const VertexBuffer& vb) {
-    const int n = vb.getVertexCount();
-    std::vector<float> out(static_cast<std::size_t>(n) * 4);
+    out.resize(static_cast<std::size_t>(n) * 4);
     const VertexArray* c = vb.colors();
     const auto argb = static_cast<std::uint32_t>(vb.getDefaultColor());
     for (int v = 0; v < n; ++v) {
         for (int k = 0; k < 4; ++k) {
-            float value;
-            if (c) value = k < c->getComponentCount() ? static_cast<float>(c->value(v, k) & 0xFF) : 255.0f;
-            else value = static_cast<float>(k == 3 ? (argb >> 24) & 0xFF : (argb >> (16 - 8 * k)) & 0xFF);
-            out[v * 4 + k] = value;
+            unsigned value;
+            if (c) value = k < c->getComponentCount() ? static_cast<unsigned>(c->value(v, k) & 0xFF) : 255u;
+            else value = k == 3 ? (argb >> 24) & 0xFF : (argb >> (16 - 8 * k)) & 0xFF;
+            out[static_cast<std::size_t>(v) * 4 + k] = static_cast<float>(value) / 255.0f;
         }
     }
-    return out;
 }
 
 void requireSameArrays(const VertexBuffer& base, const VertexBuffer& target, int index) {
@@ -140,66 +89,219 @@ void requireSameArrays(const VertexBuffer& base, const VertexBuffer& target, int
                                         " does not have the same vertex arrays (kind, components, count) as the base"));
 }
 
-void morph(const MorphingMesh& mesh, DeformedVertices& out) {
-    const VertexBuffer& base = *mesh.getVertexBuffer();
-    const int count = mesh.getMorphTargetCount();
-    for (int t = 0; t < count; ++t) requireSameArrays(base, *mesh.morphTarget(t), t);
-    const std::span<const float> weights = mesh.weights();
-    std::vector<std::vector<float>> targets(count);
-
-    // Positions: morph the raw values, then apply the base's scale and bias.
-    if (base.positions()) {
-        for (int t = 0; t < count; ++t) targets[t] = rawFloats(mesh.morphTarget(t)->positions());
-        std::vector<float> raw;
-        morphArrays(rawFloats(base.positions()), targets, weights, raw);
-        const int comps = base.positions()->getComponentCount();
-        const float s = base.positionScale();
-        const auto& b = base.positionBias();
-        out.positions.assign(static_cast<std::size_t>(out.vertexCount) * 3, 0.0f);
-        for (int v = 0; v < out.vertexCount; ++v)
-            for (int c = 0; c < 3 && c < comps; ++c) out.positions[v * 3 + c] = s * raw[v * comps + c] + b[c];
-    } else {
-        out.positions.clear();
-    }
-
-    out.normals.clear();
-    if (base.normals()) {
-        std::vector<float> b;
-        floatNormals(base.normals(), b);
-        for (int t = 0; t < count; ++t) floatNormals(mesh.morphTarget(t)->normals(), targets[t]);
-        morphArrays(b, targets, weights, out.normals);
-        for (int v = 0; v < out.vertexCount; ++v) normalize3(&out.normals[v * 3]);
-    }
-
-    // Colours (or the default colour when the base has none), clamped to 0..255.
-    for (int t = 0; t < count; ++t) targets[t] = byteColors(*mesh.morphTarget(t));
-    morphArrays(byteColors(base), targets, weights, out.colors);
-    for (float& c : out.colors) c = std::clamp(c, 0.0f, 255.0f) / 255.0f;
-
-    for (int u = 0; u < kMaxTextureUnits; ++u) {
-        out.texCoords[u].clear();
-        out.texCoordComponents[u] = 0;
-        if (!base.texCoords(u)) continue;
-        for (int t = 0; t < count; ++t) targets[t] = rawFloats(mesh.morphTarget(t)->texCoords(u));
-        morphArrays(rawFloats(base.texCoords(u)), targets, weights, out.texCoords[u]);
-        out.texCoordComponents[u] = base.texCoords(u)->getComponentCount();
-    }
+/// The kernels only fail on malformed input, which update() never builds.
+void require(bool ok, const char* what) {
+    if (!ok) throw IllegalStateException(str("MeshDeformer: internal error, invalid ", what));
 }
 
 }  // namespace
 
-bool MeshDeformer::update(const Mesh& mesh) {
-    if (const auto* skinned = dynamic_cast<const SkinnedMesh*>(&mesh)) {
-        out_.vertexCount = skinned->getVertexBuffer()->getVertexCount();
-        skin(*skinned, out_);
-    } else if (const auto* morphing = dynamic_cast<const MorphingMesh*>(&mesh)) {
-        out_.vertexCount = morphing->getVertexBuffer()->getVertexCount();
-        morph(*morphing, out_);
-    } else {
-        out_ = DeformedVertices{};
-        return false;
-    }
+void MeshDeformer::addSource(const VertexBuffer* vb) {
+    newSources_.push_back(vb ? Source{vb->getObjectId(), vb->getRevision()} : Source{});
+}
+
+void MeshDeformer::addSource(const VertexArray* array) {
+    newSources_.push_back(array ? Source{array->getObjectId(), array->getRevision()} : Source{});
+}
+
+bool MeshDeformer::sourcesChanged(Kind kind, const Mesh& mesh) {
+    const bool changed = kind != kind_ || mesh.getObjectId() != meshId_ || newSources_ != sources_;
+    kind_ = kind;
+    meshId_ = mesh.getObjectId();
+    sources_.swap(newSources_);
+    return changed;
+}
+
+void MeshDeformer::finish() {
+    valid_ = true;
     ++stamp_;
+}
+
+bool MeshDeformer::update(const Mesh& mesh) {
+    if (const auto* skinned = dynamic_cast<const SkinnedMesh*>(&mesh)) return updateSkinned(*skinned);
+    if (const auto* morphing = dynamic_cast<const MorphingMesh*>(&mesh)) return updateMorphing(*morphing);
+    out_ = DeformedVertices{};
+    kind_ = Kind::None;
+    valid_ = false;
+    sources_.clear();
+    return false;
+}
+
+bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
+    const VertexBuffer& vb = *mesh.getVertexBuffer();
+    newSources_.clear();
+    addSource(&vb);
+    addSource(vb.positions());
+    addSource(vb.normals());
+    const bool inputsChanged = sourcesChanged(Kind::Skinned, mesh) || !valid_;
+    const auto n = static_cast<std::size_t>(vb.getVertexCount());
+    if (inputsChanged) {
+        valid_ = false;
+        if (vb.positions())
+            rawFloats(vb.positions(), rawPositions_);
+        else
+            rawPositions_.assign(n * 3, 0.0f);
+        floatNormals(vb.normals(), baseNormals_);
+        out_.vertexCount = static_cast<int>(n);
+        out_.positions.resize(n * 3);
+        out_.normals.resize(baseNormals_.size());
+        out_.colors.clear();
+        for (auto& t : out_.texCoords) t.clear();
+        out_.texCoordComponents.fill(0);
+    }
+
+    const skin::InfluenceTable& table = mesh.influenceTable();
+    const bool tableChanged = inputsChanged || table.revision() != tableRevision_;
+    if (tableChanged) {
+        valid_ = false;
+        partition_.build(table.bones(), table.maxInfluences(), n);
+        tableRevision_ = table.revision();
+    }
+
+    // The palette, once per bone: (bone -> mesh now) x (at rest).
+    const auto bones = static_cast<std::size_t>(mesh.boneCount());
+    boneMatrices_.resize(bones * 16);
+    atRest_.resize(bones * 16);
+    newPalette_.resize(bones);
+    for (std::size_t b = 0; b < bones; ++b) {
+        Transform boneToMesh;
+        mesh.bone(static_cast<int>(b))->getTransformTo(&mesh, &boneToMesh);
+        std::copy(boneToMesh.rows().begin(), boneToMesh.rows().end(), boneMatrices_.begin() + b * 16);
+        const auto& rest = mesh.atRestTransform(static_cast<int>(b)).rows();
+        std::copy(rest.begin(), rest.end(), atRest_.begin() + b * 16);
+    }
+    skin::PaletteJob paletteJob;
+    paletteJob.boneCount = bones;
+    paletteJob.boneToMesh = boneMatrices_;
+    paletteJob.atRest = atRest_;
+    paletteJob.output = newPalette_;
+    require(paletteJob.run(), "palette job");
+    const bool paletteChanged = palette_.size() != bones ||
+                                (bones > 0 && std::memcmp(palette_.data(), newPalette_.data(),
+                                                          bones * sizeof(skin::PaletteEntry)) != 0);
+    if (valid_ && !paletteChanged) return false;
+    palette_.swap(newPalette_);
+    valid_ = false;
+
+    const bool hasPositions = vb.positions() != nullptr;
+    for (int c = 0; c <= partition_.maxInfluences(); ++c) {
+        const auto group = partition_.group(c);
+        if (group.empty()) continue;
+        skin::SkinningJob job;
+        job.vertices = group;
+        job.vertexCount = n;
+        job.influenceCount = c;
+        job.influenceStride = table.maxInfluences();
+        job.boneIndices = table.bones();
+        job.boneWeights = table.weights();
+        job.palette = palette_;
+        // No position array: zeros (skinned like any point), as before.
+        job.positionScale = hasPositions ? vb.positionScale() : 1.0f;
+        job.positionBias = hasPositions ? vb.positionBias() : std::array<float, 3>{0.0f, 0.0f, 0.0f};
+        job.inPositions = rawPositions_;
+        job.outPositions = out_.positions;
+        job.inNormals = baseNormals_;
+        job.outNormals = out_.normals;
+        require(group.size() >= kParallelVertices ? job.runParallel(skin::ThreadPool::shared(), kGrain) : job.run(),
+                "skinning job");
+    }
+    finish();
+    return true;
+}
+
+bool MeshDeformer::updateMorphing(const MorphingMesh& mesh) {
+    const VertexBuffer& base = *mesh.getVertexBuffer();
+    const int count = mesh.getMorphTargetCount();
+    newSources_.clear();
+    auto addBuffer = [&](const VertexBuffer& vb) {
+        addSource(&vb);
+        addSource(vb.positions());
+        addSource(vb.normals());
+        addSource(vb.colors());
+        for (int u = 0; u < kMaxTextureUnits; ++u) addSource(vb.texCoords(u));
+    };
+    addBuffer(base);
+    for (int t = 0; t < count; ++t) addBuffer(*mesh.morphTarget(t));
+    const bool inputsChanged = sourcesChanged(Kind::Morphing, mesh) || !valid_;
+    const std::span<const float> weights = mesh.weights();
+    const bool weightsChanged =
+        weights_.size() != weights.size() ||
+        (!weights.empty() && std::memcmp(weights_.data(), weights.data(), weights.size() * sizeof(float)) != 0);
+    if (!inputsChanged && !weightsChanged) return false;
+    valid_ = false;
+
+    const auto n = static_cast<std::size_t>(base.getVertexCount());
+    if (inputsChanged) {
+        for (int t = 0; t < count; ++t) requireSameArrays(base, *mesh.morphTarget(t), t);
+        for (auto& a : morph_) {
+            a.values.resize(static_cast<std::size_t>(count) + 1);
+            a.components = 0;
+        }
+        auto buffer = [&](int i) -> const VertexBuffer& { return i == 0 ? base : *mesh.morphTarget(i - 1); };
+        for (int i = 0; i <= count; ++i) {
+            const VertexBuffer& vb = buffer(i);
+            const auto slot = static_cast<std::size_t>(i);
+            // Targets use the base's scale and bias (the formula is linear,
+            // so scaling before or after blending is the same).
+            if (vb.positions()) {
+                scaledPositions(vb.positions(), base.positionScale(), base.positionBias(),
+                                morph_[kMorphPositions].values[slot]);
+                morph_[kMorphPositions].components = 3;
+            }
+            if (vb.normals()) {
+                floatNormals(vb.normals(), morph_[kMorphNormals].values[slot]);
+                morph_[kMorphNormals].components = 3;
+            }
+            unitColors(vb, morph_[kMorphColors].values[slot]);
+            morph_[kMorphColors].components = 4;
+            for (int u = 0; u < kMaxTextureUnits; ++u) {
+                if (!vb.texCoords(u)) continue;
+                rawFloats(vb.texCoords(u), morph_[kMorphTexCoords + u].values[slot]);
+                morph_[kMorphTexCoords + u].components = vb.texCoords(u)->getComponentCount();
+            }
+        }
+        out_.vertexCount = static_cast<int>(n);
+        auto size = [&](int attribute, std::vector<float>& out) {
+            const int comps = morph_[static_cast<std::size_t>(attribute)].components;
+            if (comps == 0)
+                out.clear();
+            else
+                out.resize(n * static_cast<std::size_t>(comps));
+        };
+        size(kMorphPositions, out_.positions);
+        size(kMorphNormals, out_.normals);
+        size(kMorphColors, out_.colors);
+        for (int u = 0; u < kMaxTextureUnits; ++u) {
+            size(kMorphTexCoords + u, out_.texCoords[u]);
+            out_.texCoordComponents[u] = morph_[kMorphTexCoords + u].components;
+        }
+    }
+    weights_.assign(weights.begin(), weights.end());
+
+    // Targets with weight 0 contribute nothing: leave them out.
+    activeWeights_.clear();
+    for (int t = 0; t < count; ++t)
+        if (weights[t] != 0.0f) activeWeights_.push_back(weights[t]);
+    for (std::size_t a = 0; a < morph_.size(); ++a) {
+        const MorphAttribute& attribute = morph_[a];
+        if (attribute.components == 0) continue;
+        activeTargets_.clear();
+        for (int t = 0; t < count; ++t)
+            if (weights[t] != 0.0f) activeTargets_.push_back(attribute.values[static_cast<std::size_t>(t) + 1]);
+        std::vector<float>& out = a == kMorphPositions ? out_.positions
+                                  : a == kMorphNormals ? out_.normals
+                                  : a == kMorphColors  ? out_.colors
+                                                       : out_.texCoords[a - kMorphTexCoords];
+        skin::MorphJob job;
+        job.base = attribute.values[0];
+        job.targets = activeTargets_;
+        job.weights = activeWeights_;
+        job.output = out;
+        job.clamp = a == kMorphColors;  // colours clamped to [0, 1] (0..255 in bytes)
+        job.normalize = a == kMorphNormals;
+        require(n >= kParallelVertices ? job.runParallel(skin::ThreadPool::shared(), kGrain) : job.run(), "morph job");
+    }
+    finish();
     return true;
 }
 

@@ -7,10 +7,18 @@
 #include <cstdint>
 #include <vector>
 
+#include <span>
+
 #include <m3g/Limits.h>
+#include <m3g/skin/Palette.h>
+#include <m3g/skin/Skinning.h>
 
 namespace m3g {
 class Mesh;
+class MorphingMesh;
+class SkinnedMesh;
+class VertexArray;
+class VertexBuffer;
 }
 
 namespace m3g::detail {
@@ -50,8 +58,53 @@ public:
     std::uint64_t stamp() const noexcept { return stamp_; }
 
 private:
+    /// An object read by the last computation: (object id, revision); id 0
+    /// stands for "no object".
+    struct Source {
+        std::uint64_t id = 0;
+        std::uint32_t revision = 0;
+        friend bool operator==(const Source&, const Source&) = default;
+    };
+    enum class Kind { None, Skinned, Morphing };
+
+    bool updateSkinned(const SkinnedMesh& mesh);
+    bool updateMorphing(const MorphingMesh& mesh);
+    /// Records `mesh`'s kind and id and whether `sources` equal the stored
+    /// ones (then swaps them in). True when anything differs.
+    bool sourcesChanged(Kind kind, const Mesh& mesh);
+    void addSource(const VertexBuffer* vb);
+    void addSource(const VertexArray* array);
+    void finish();
+
     DeformedVertices out_;
     std::uint64_t stamp_ = 0;
+
+    // ---- Change detection: out_ is valid for exactly these inputs ----
+    Kind kind_ = Kind::None;
+    std::uint64_t meshId_ = 0;
+    bool valid_ = false;
+    std::vector<Source> sources_;      // VertexBuffers and VertexArrays, fixed order
+    std::vector<Source> newSources_;   // scratch of update()
+
+    // ---- SkinnedMesh: inputs as floats (rebuilt when a source changes) ----
+    std::vector<float> rawPositions_;  // unscaled; scale and bias go to the kernel
+    std::vector<float> baseNormals_;   // GL signed-normalised mapping
+    std::uint32_t tableRevision_ = 0;
+    skin::InfluencePartition partition_;
+    std::vector<float> boneMatrices_;  // 16 per bone: bone -> mesh now
+    std::vector<float> atRest_;        // 16 per bone
+    std::vector<skin::PaletteEntry> palette_, newPalette_;
+
+    // ---- MorphingMesh: base then targets, per attribute, as floats ----
+    struct MorphAttribute {
+        std::vector<std::vector<float>> values;  // [0] = base, [1 + t] = target t
+        int components = 0;                      // 0: attribute absent
+    };
+    enum { kMorphPositions, kMorphNormals, kMorphColors, kMorphTexCoords };
+    std::array<MorphAttribute, 3 + kMaxTextureUnits> morph_;
+    std::vector<float> weights_;                 // the weights out_ was made with
+    std::vector<float> activeWeights_;           // scratch: non-zero weights
+    std::vector<std::span<const float>> activeTargets_;
 };
 
 }  // namespace m3g::detail

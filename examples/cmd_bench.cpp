@@ -1,0 +1,212 @@
+// m3g bench skin   the founding paper's skinning experiment, reproduced and
+//                  extended (tests/bench/SkinWorkload.h): per-frame cost per
+//                  vertex of the paper's baseline (Nokia's engine as the paper
+//                  describes it) and of this library's palette + kernel on
+//                  each code path, with the speed-up over the baseline.
+// m3g bench morph  the morph kernel against the plain per-target loop.
+// Options: --quick (fewer sizes, shorter runs), --baseline-max N (largest
+// mesh the O(V^2) baseline runs on, default 100000), --run L (vertices per
+// addTransform record, default 16), --time S (seconds per measurement,
+// default 0.3).
+#include "cmd_bench.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <m3g/skin/Isa.h>
+#include <m3g/skin/ThreadPool.h>
+
+#include "SkinWorkload.h"
+
+namespace m3gcli {
+
+namespace {
+
+using m3gbench::Variant;
+using Clock = std::chrono::steady_clock;
+
+struct BenchOptions {
+    bool quick = false;
+    std::size_t baselineMax = 100000;
+    int runLength = 16;
+    double seconds = 0.3;
+};
+
+/// Median seconds per frame of `frame()`: batches of at least 2 ms (or one
+/// frame), repeated for about `seconds` (at least 3 batches, or a single
+/// frame when one frame already takes longer than `seconds`).
+template <class F>
+double secondsPerFrame(F&& frame, double seconds) {
+    auto t0 = Clock::now();
+    frame();  // warm-up (caches, first-touch, thread start)
+    const double first = std::chrono::duration<double>(Clock::now() - t0).count();
+    if (first > seconds) return first;
+    const std::size_t batch = std::max<std::size_t>(1, static_cast<std::size_t>(0.002 / std::max(first, 1e-9)));
+    std::vector<double> samples;
+    const auto start = Clock::now();
+    while (samples.size() < 3 || std::chrono::duration<double>(Clock::now() - start).count() < seconds) {
+        t0 = Clock::now();
+        for (std::size_t i = 0; i < batch; ++i) frame();
+        samples.push_back(std::chrono::duration<double>(Clock::now() - t0).count() / static_cast<double>(batch));
+        if (samples.size() >= 1000) break;
+    }
+    std::nth_element(samples.begin(), samples.begin() + static_cast<long>(samples.size() / 2), samples.end());
+    return samples[samples.size() / 2];
+}
+
+const Variant kVariants[] = {Variant::Baseline, Variant::Scalar, Variant::Sse2, Variant::Avx2, Variant::Parallel};
+
+void printHeader(const char* first, const char* second, const char* third) {
+    std::printf("%9s %6s %6s", first, second, third);
+    for (Variant v : kVariants) std::printf(" %10s", m3gbench::variantName(v));
+    std::printf(" %8s %9s\n", "best", "speed-up");
+}
+
+/// Prints one row: ns per vertex per variant (negative = not run); a
+/// negative `b` leaves its column empty.
+void printRow(std::size_t vertices, int a, int b, const double (&ns)[5]) {
+    if (b >= 0)
+        std::printf("%9zu %6d %6d", vertices, a, b);
+    else
+        std::printf("%9zu %6d %6s", vertices, a, "");
+    double best = -1;
+    int bestIndex = -1;
+    for (int i = 0; i < 5; ++i) {
+        if (ns[i] < 0) {
+            std::printf(" %10s", "-");
+            continue;
+        }
+        std::printf(" %10.2f", ns[i]);
+        if (i > 0 && (best < 0 || ns[i] < best)) {
+            best = ns[i];
+            bestIndex = i;
+        }
+    }
+    std::printf(" %8s", bestIndex > 0 ? m3gbench::variantName(kVariants[bestIndex]) : "-");
+    if (ns[0] > 0 && best > 0)
+        std::printf(" %8.1fx\n", ns[0] / best);
+    else
+        std::printf(" %9s\n", "-");
+    std::fflush(stdout);
+}
+
+void printIsa(m3g::skin::ThreadPool& pool) {
+    std::printf("code paths on this CPU: scalar, sse2 %s, avx2+fma %s; avx2+mt uses %d threads\n",
+                m3g::skin::isaSupported(m3g::skin::Isa::Sse2) ? "yes" : "no",
+                m3g::skin::isaSupported(m3g::skin::Isa::Avx2) ? "yes" : "no", pool.threadCount());
+}
+
+int benchSkin(const BenchOptions& o) {
+    auto& pool = m3g::skin::ThreadPool::shared();
+    std::printf("m3g bench skin: nanoseconds per vertex per frame (positions + normals; the palette or\n"
+                "the paper's per-bone PT/NT included), median of timed batches. Baseline: the paper's\n"
+                "description of Nokia's engine (record list searched per vertex, weights normalised at\n"
+                "render time), one record per %d-vertex run and bone.\n",
+                o.runLength);
+    printIsa(pool);
+    std::printf("The paper's meshes: 100, 350, 500 and 1,200 polygons (taken here as vertices).\n\n");
+    printHeader("vertices", "infl", "bones");
+    std::vector<std::size_t> sizes{100, 350, 500, 1200, 10000, 100000, 1000000};
+    std::vector<int> influences{1, 2, 3, 4};
+    if (o.quick) {
+        sizes = {100, 1200, 10000, 100000};
+        influences = {1, 4};
+    }
+    for (std::size_t v : sizes) {
+        const int bones = v <= 1200 ? 20 : 60;
+        for (int k : influences) {
+            m3gbench::SkinWorkload w(v, k, bones, o.runLength);
+            double ns[5];
+            for (int i = 0; i < 5; ++i) {
+                const Variant var = kVariants[i];
+                if ((var == Variant::Baseline && v > o.baselineMax) || !w.frame(var, &pool)) {
+                    ns[i] = -1;
+                    continue;
+                }
+                ns[i] = secondsPerFrame([&] { w.frame(var, &pool); }, o.seconds) * 1e9 / static_cast<double>(v);
+            }
+            printRow(v, k, bones, ns);
+        }
+    }
+    return 0;
+}
+
+int benchMorph(const BenchOptions& o) {
+    auto& pool = m3g::skin::ThreadPool::shared();
+    std::printf("m3g bench morph: nanoseconds per vertex per frame (positions + renormalised normals);\n"
+                "baseline: one pass over the array per target (the earlier reference loop).\n");
+    printIsa(pool);
+    std::printf("\n");
+    printHeader("vertices", "targets", "");
+    std::vector<std::size_t> sizes{1200, 10000, 100000, 1000000};
+    if (o.quick) sizes = {1200, 100000};
+    for (std::size_t v : sizes)
+        for (int t : {1, 4}) {
+            m3gbench::MorphWorkload w(v, t);
+            double ns[5];
+            for (int i = 0; i < 5; ++i) {
+                const Variant var = kVariants[i];
+                if (!w.frame(var, &pool)) {
+                    ns[i] = -1;
+                    continue;
+                }
+                ns[i] = secondsPerFrame([&] { w.frame(var, &pool); }, o.seconds) * 1e9 / static_cast<double>(v);
+            }
+            printRow(v, t, -1, ns);
+        }
+    return 0;
+}
+
+const char* const kUsage =
+    "usage: m3g bench skin|morph [--quick] [--baseline-max N] [--run L] [--time SECONDS]\n";
+
+}  // namespace
+
+int benchCommand(int argc, const char* const* argv) {
+    if (argc < 1) {
+        std::fprintf(stderr, "m3g: bench needs what to measure\n%s", kUsage);
+        return 2;
+    }
+    const std::string_view what = argv[0];
+    BenchOptions o;
+    for (int i = 1; i < argc; ++i) {
+        const std::string_view a = argv[i];
+        auto value = [&](const char* name) -> const char* {
+            if (i + 1 >= argc) {
+                std::fprintf(stderr, "m3g: %s needs a value\n%s", name, kUsage);
+                return nullptr;
+            }
+            return argv[++i];
+        };
+        if (a == "--quick") {
+            o.quick = true;
+            o.seconds = 0.1;
+        } else if (a == "--baseline-max" || a == "--run" || a == "--time") {
+            const char* v = value(std::string(a).c_str());
+            if (!v) return 2;
+            char* end = nullptr;
+            const double x = std::strtod(v, &end);
+            if (*end != '\0' || !(x > 0)) {
+                std::fprintf(stderr, "m3g: %s: '%s' is not a positive number\n%s", std::string(a).c_str(), v, kUsage);
+                return 2;
+            }
+            if (a == "--baseline-max") o.baselineMax = static_cast<std::size_t>(x);
+            else if (a == "--run") o.runLength = std::max(1, static_cast<int>(x));
+            else o.seconds = x;
+        } else {
+            std::fprintf(stderr, "m3g: unknown bench option '%s'\n%s", argv[i], kUsage);
+            return 2;
+        }
+    }
+    if (what == "skin") return benchSkin(o);
+    if (what == "morph") return benchMorph(o);
+    std::fprintf(stderr, "m3g: unknown benchmark '%s'\n%s", argv[0], kUsage);
+    return 2;
+}
+
+}  // namespace m3gcli

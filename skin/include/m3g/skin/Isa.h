@@ -1,0 +1,23 @@
+// Instruction-set selection for the skin/ kernels. Every kernel has a plain
+// C++ path; on x86 there are SSE2 (the x86-64 baseline) and AVX2+FMA paths,
+// the latter compiled with function target attributes and chosen at run time
+// from the CPU's feature bits, so one binary runs on every x86-64 CPU.
+#pragma once
+
+namespace m3g::skin {
+
+enum class Isa {
+    Auto,    ///< the best path this CPU supports (resolveIsa)
+    Scalar,  ///< plain C++ loops (whatever the compiler makes of them)
+    Sse2,    ///< 128-bit SSE2 intrinsics (x86 only)
+    Avx2,    ///< 256-bit AVX2 + FMA intrinsics (x86 CPUs that report both)
+};
+
+/// True if `isa` can run here (Auto and Scalar always can).
+bool isaSupported(Isa isa) noexcept;
+/// Auto -> the best supported path; any other value is returned unchanged.
+Isa resolveIsa(Isa isa) noexcept;
+/// "auto", "scalar", "sse2", "avx2".
+const char* isaName(Isa isa) noexcept;
+
+}  // namespace m3g::skin

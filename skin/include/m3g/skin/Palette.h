@@ -1,0 +1,52 @@
+// The per-frame bone palette of a skinned mesh (spec digest §5.11): one entry
+// per bone, computed once per bone per frame, consumed by SkinningJob (and,
+// with the same layout, by the skinning compute shader).
+#pragma once
+
+#include <cstddef>
+#include <span>
+
+namespace m3g::skin {
+
+/// One bone's matrices, std430-compatible: read it in GLSL as
+///   struct PaletteEntry { vec4 position[3]; vec4 normal[3]; };
+/// (96 bytes, 16-byte aligned, no padding inside).
+struct alignas(16) PaletteEntry {
+    /// Rows 0..2 of the affine matrix (bone -> mesh now) x (at rest:
+    /// mesh -> bone), element [r * 4 + c]; the implied row 3 is (0, 0, 0, 1).
+    float position[12];
+    /// Rows 0..2 of the inverse transpose of the upper 3x3 of `position`,
+    /// element [r * 4 + c], with [r * 4 + 3] = 0. For a singular 3x3 it holds
+    /// the cofactor matrix instead (the inverse transpose times the
+    /// determinant, which points the same way up to the sign), so that a
+    /// bone scaled to a plane still gives usable normals after renormalisation.
+    float normal[12];
+};
+static_assert(sizeof(PaletteEntry) == 96, "PaletteEntry must match the std430 layout");
+
+/// Computes palette entries from per-bone matrices. Owns no memory.
+///
+/// Both inputs are 4x4 matrices in M3G's Transform order (row-major, element
+/// index row * 4 + col), 16 floats per bone. Only their top three rows are
+/// used: node transforms are affine (Node::setTransform rejects a W row other
+/// than 0 0 0 1), so the products are too. The product and the inverse are
+/// computed in double precision and rounded once.
+struct PaletteJob {
+    /// Number of entries to compute.
+    std::size_t boneCount = 0;
+    /// bone -> mesh, as posed now (Node::getTransformTo(mesh)).
+    std::span<const float> boneToMesh;
+    /// at rest: mesh -> bone (SkinnedMesh::getBoneTransform).
+    std::span<const float> atRest;
+    /// At least boneCount entries.
+    std::span<PaletteEntry> output;
+
+    /// True if the spans are large enough: 16 * boneCount floats each and
+    /// boneCount entries. (Non-finite elements are not rejected: they give
+    /// non-finite entries, as the plain formula would.)
+    bool validate() const noexcept;
+    /// validate(), then writes output[0 .. boneCount). Returns validate().
+    bool run() const noexcept;
+};
+
+}  // namespace m3g::skin

@@ -1,0 +1,105 @@
+// Linear blend skinning of positions and normals (spec digest §5.11):
+//   p' = sum_k w_k * P[b_k] * (s * p + bias)        (P: PaletteEntry::position)
+//   n' = normalise(sum_k w_k * N[b_k] * n)          (N: PaletteEntry::normal)
+// over a list of vertices that all use the same number of influences, the
+// way ozz-animation's SkinningJob works: a struct of spans and strides,
+// validate(), run(), no memory of its own. InfluencePartition groups a
+// mesh's vertices by influence count so that each group runs the kernel
+// specialised for it (1, 2, 3, 4; a generic loop above 4; a copy for 0).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <m3g/skin/Isa.h>
+#include <m3g/skin/Palette.h>
+
+namespace m3g::skin {
+
+class ThreadPool;
+
+struct SkinningJob {
+    /// The vertices to process (indices into the per-vertex arrays below).
+    /// Each index must be < vertexCount. Order and duplicates are allowed;
+    /// every listed vertex's output is a function of its inputs only.
+    std::span<const std::uint32_t> vertices;
+    /// Number of vertices in the per-vertex arrays.
+    std::size_t vertexCount = 0;
+
+    /// Influences used per listed vertex: slots 0 .. influenceCount-1.
+    /// 0 means "no bone": the vertex stays in mesh space (s * p + bias, the
+    /// normal renormalised), as Nokia's engine leaves it (spec digest §8.9).
+    int influenceCount = 0;
+    /// Slot k of vertex v is at [v * influenceStride + k] in boneIndices and
+    /// boneWeights (InfluenceTable's layout: influenceStride = N).
+    int influenceStride = 0;
+    /// Bone (palette) index per slot. A used slot whose index is outside the
+    /// palette (-1 = empty, or anything else out of range) contributes
+    /// nothing: run() never reads outside the palette.
+    std::span<const std::int32_t> boneIndices;
+    /// Weight per slot, already normalised (the kernel does not divide).
+    std::span<const float> boneWeights;
+    std::span<const PaletteEntry> palette;
+
+    /// Applied to the input positions before skinning (VertexBuffer's
+    /// position scale and bias).
+    float positionScale = 1.0f;
+    std::array<float, 3> positionBias{0.0f, 0.0f, 0.0f};
+
+    /// xyz of vertex v at [v * stride]; strides in floats, >= 3.
+    std::span<const float> inPositions;
+    std::size_t inPositionStride = 3;
+    /// Empty: no normals (outNormals must be empty too).
+    std::span<const float> inNormals;
+    std::size_t inNormalStride = 3;
+    std::span<float> outPositions;
+    std::size_t outPositionStride = 3;
+    std::span<float> outNormals;
+    std::size_t outNormalStride = 3;
+
+    /// Which code path runs; an unsupported one makes validate() false.
+    Isa isa = Isa::Auto;
+
+    /// Checks sizes and strides: every per-vertex array holds vertexCount
+    /// vertices at its stride (strides >= 3), normals are both present or
+    /// both absent, influenceCount <= influenceStride, the influence arrays
+    /// reach the listed vertices, every listed vertex is < vertexCount (one
+    /// max reduction over the list) and the ISA is supported. The bone
+    /// indices are not scanned (see boneIndices). Like ozz-animation, cheap
+    /// enough to run on every call.
+    bool validate() const noexcept;
+    /// validate(), then skins every listed vertex. Returns validate().
+    bool run() const noexcept;
+    /// validate() once, then runs the list in chunks of `grain` vertices on
+    /// `pool`. The chunks do not depend on the pool's size and each vertex is
+    /// computed the same way in any chunk, so the output is bit-identical to
+    /// run() for any thread count.
+    bool runParallel(ThreadPool& pool, std::size_t grain = 4096) const noexcept;
+};
+
+/// A mesh's vertices grouped by influence count (number of filled slots of
+/// an InfluenceTable-layout bone array: slots are filled from 0, -1 = empty),
+/// ascending vertex order within a group. Vertices beyond the table have no
+/// influence. Rebuilt only when the table changes; reuses its storage.
+class InfluencePartition {
+public:
+    /// Groups vertices [0, vertexCount). `boneIndices` holds
+    /// tableVertexCount * stride slots (tableVertexCount may be smaller or
+    /// larger than vertexCount).
+    void build(std::span<const std::int32_t> boneIndices, int stride, std::size_t vertexCount);
+
+    /// Largest group index (= stride after build()).
+    int maxInfluences() const noexcept { return static_cast<int>(offsets_.size()) - 2; }
+    /// Vertices with exactly `count` influences (empty for count out of range).
+    std::span<const std::uint32_t> group(int count) const noexcept;
+
+private:
+    std::vector<std::uint32_t> vertices_;
+    std::vector<std::size_t> offsets_;  // group c = [offsets_[c], offsets_[c + 1])
+    std::vector<std::size_t> cursor_;   // build() scratch
+};
+
+}  // namespace m3g::skin

@@ -1,0 +1,48 @@
+#include <m3g/skin/Isa.h>
+
+namespace m3g::skin {
+
+namespace {
+bool cpuHasAvx2Fma() noexcept {
+#if defined(__x86_64__) || defined(__i386__)
+    // __builtin_cpu_supports also checks that the OS saves the YMM state.
+    static const bool has = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+    return has;
+#else
+    return false;
+#endif
+}
+}  // namespace
+
+bool isaSupported(Isa isa) noexcept {
+    switch (isa) {
+        case Isa::Auto:
+        case Isa::Scalar: return true;
+#if defined(__x86_64__) || defined(__i386__)
+        case Isa::Sse2: return __builtin_cpu_supports("sse2");
+#else
+        case Isa::Sse2: return false;
+#endif
+        case Isa::Avx2: return cpuHasAvx2Fma();
+    }
+    return false;
+}
+
+Isa resolveIsa(Isa isa) noexcept {
+    if (isa != Isa::Auto) return isa;
+    if (isaSupported(Isa::Avx2)) return Isa::Avx2;
+    if (isaSupported(Isa::Sse2)) return Isa::Sse2;
+    return Isa::Scalar;
+}
+
+const char* isaName(Isa isa) noexcept {
+    switch (isa) {
+        case Isa::Auto: return "auto";
+        case Isa::Scalar: return "scalar";
+        case Isa::Sse2: return "sse2";
+        case Isa::Avx2: return "avx2";
+    }
+    return "?";
+}
+
+}  // namespace m3g::skin

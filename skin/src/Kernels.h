@@ -1,0 +1,46 @@
+// Internal: the per-ISA kernel entry points behind SkinningJob and MorphJob.
+// Each processes a sub-range of an already validated job.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+
+#include <m3g/skin/Morph.h>
+#include <m3g/skin/Skinning.h>
+
+namespace m3g::skin::detail {
+
+/// Listed vertices [begin, end) of `job` (job.vertices indices).
+void skinScalar(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept;
+/// Vertex v of `job` by the plain formula, skipping slots whose bone index is
+/// outside the palette: the SIMD paths' fallback for such vertices.
+void skinVertexChecked(const SkinningJob& job, std::size_t v) noexcept;
+/// Elements [begin, end) of `job` (float indices into base/output); with
+/// job.normalize, begin and end are multiples of 3.
+void morphScalar(const MorphJob& job, std::size_t begin, std::size_t end) noexcept;
+
+#if defined(__x86_64__) || defined(__i386__)
+#define M3G_SKIN_X86 1
+void skinSse2(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept;
+void skinAvx2(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept;
+void morphSse2(const MorphJob& job, std::size_t begin, std::size_t end) noexcept;
+void morphAvx2(const MorphJob& job, std::size_t begin, std::size_t end) noexcept;
+/// Renormalises `triples` xyz triples in place, 4 (8) lanes at a time; every
+/// triple goes through the same lane operations (partial blocks are padded).
+void normalizeSse2(float* xyz, std::size_t triples) noexcept;
+void normalizeAvx2(float* xyz, std::size_t triples) noexcept;
+#endif
+
+/// x / |x| for an xyz triple in place (each component divided by the
+/// length); a zero-length (or NaN) triple is left as it is. Shared by the scalar paths and the tails.
+inline void normalize3(float* n) noexcept {
+    const float len2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    if (len2 > 0.0f) {
+        const float len = std::sqrt(len2);
+        n[0] /= len;
+        n[1] /= len;
+        n[2] /= len;
+    }
+}
+
+}  // namespace m3g::skin::detail

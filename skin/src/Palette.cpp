@@ -1,0 +1,50 @@
+#include <m3g/skin/Palette.h>
+
+#include <cmath>
+
+namespace m3g::skin {
+
+bool PaletteJob::validate() const noexcept {
+    const std::size_t floats = boneCount * 16;
+    return boneToMesh.size() >= floats && atRest.size() >= floats && output.size() >= boneCount;
+}
+
+bool PaletteJob::run() const noexcept {
+    if (!validate()) return false;
+    for (std::size_t b = 0; b < boneCount; ++b) {
+        const float* a = boneToMesh.data() + b * 16;
+        const float* r = atRest.data() + b * 16;
+        // m = a * r on the top three rows (both matrices affine).
+        double m[3][4];
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 4; ++j) {
+                double sum = j == 3 ? static_cast<double>(a[i * 4 + 3]) : 0.0;
+                for (int k = 0; k < 3; ++k)
+                    sum += static_cast<double>(a[i * 4 + k]) * static_cast<double>(r[k * 4 + j]);
+                m[i][j] = sum;
+            }
+        }
+        // Cofactors of the 3x3: cof[i][j] = (-1)^(i+j) minor(i, j). The
+        // inverse transpose is cof / det.
+        double cof[3][3];
+        for (int i = 0; i < 3; ++i) {
+            const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+            for (int j = 0; j < 3; ++j) {
+                const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+                // Cyclic indices give the signed cofactor directly.
+                cof[i][j] = m[i1][j1] * m[i2][j2] - m[i1][j2] * m[i2][j1];
+            }
+        }
+        const double det = m[0][0] * cof[0][0] + m[0][1] * cof[0][1] + m[0][2] * cof[0][2];
+        const double scale = det != 0.0 && std::isfinite(det) ? 1.0 / det : 1.0;
+        PaletteEntry& e = output[b];
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 4; ++j) e.position[i * 4 + j] = static_cast<float>(m[i][j]);
+            for (int j = 0; j < 3; ++j) e.normal[i * 4 + j] = static_cast<float>(cof[i][j] * scale);
+            e.normal[i * 4 + 3] = 0.0f;
+        }
+    }
+    return true;
+}
+
+}  // namespace m3g::skin

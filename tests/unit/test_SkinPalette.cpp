@@ -1,0 +1,138 @@
+// skin::PaletteJob: the per-frame bone palette (spec digest §5.11). Every
+// expected matrix is worked out by hand in the comments.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include <m3g/skin/Palette.h>
+
+using m3g::skin::PaletteEntry;
+using m3g::skin::PaletteJob;
+using Mat = std::array<float, 16>;
+
+namespace {
+
+constexpr Mat kIdentity{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+
+Mat translation(float x, float y, float z) { return {1, 0, 0, x, 0, 1, 0, y, 0, 0, 1, z, 0, 0, 0, 1}; }
+
+PaletteEntry compute(const Mat& boneToMesh, const Mat& atRest) {
+    PaletteEntry e{};
+    PaletteJob job;
+    job.boneCount = 1;
+    job.boneToMesh = boneToMesh;
+    job.atRest = atRest;
+    job.output = std::span<PaletteEntry>(&e, 1);
+    EXPECT_TRUE(job.run());
+    return e;
+}
+
+void expectRows(const float* actual, const std::array<float, 12>& expected, const char* what) {
+    for (int i = 0; i < 12; ++i) EXPECT_NEAR(actual[i], expected[static_cast<std::size_t>(i)], 1e-6f) << what << " element " << i;
+}
+
+}  // namespace
+
+TEST(SkinPalette, LayoutIsStd430Compatible) {
+    // GLSL: struct { vec4 position[3]; vec4 normal[3]; } has offsets 0 and 48,
+    // size 96, alignment 16 under std430.
+    EXPECT_EQ(sizeof(PaletteEntry), 96u);
+    EXPECT_EQ(alignof(PaletteEntry), 16u);
+    EXPECT_EQ(offsetof(PaletteEntry, position), 0u);
+    EXPECT_EQ(offsetof(PaletteEntry, normal), 48u);
+}
+
+TEST(SkinPalette, ValidateChecksSizes) {
+    std::vector<float> m(32, 0.0f);
+    std::vector<PaletteEntry> out(2);
+    PaletteJob job;
+    job.boneCount = 2;
+    job.boneToMesh = m;
+    job.atRest = m;
+    job.output = out;
+    EXPECT_TRUE(job.validate());
+    job.boneToMesh = std::span<const float>(m).first(31);
+    EXPECT_FALSE(job.validate());
+    EXPECT_FALSE(job.run());
+    job.boneToMesh = m;
+    job.atRest = std::span<const float>(m).first(16);
+    EXPECT_FALSE(job.validate());
+    job.atRest = m;
+    job.output = std::span<PaletteEntry>(out).first(1);
+    EXPECT_FALSE(job.validate());
+    // No bones: nothing to do, valid with empty spans.
+    PaletteJob empty;
+    EXPECT_TRUE(empty.validate());
+    EXPECT_TRUE(empty.run());
+}
+
+TEST(SkinPalette, TranslationsCompose) {
+    // T(1, 2, 3) x T(-1, 0, 0) = T(0, 2, 3); normals untouched.
+    const PaletteEntry e = compute(translation(1, 2, 3), translation(-1, 0, 0));
+    expectRows(e.position, {1, 0, 0, 0, 0, 1, 0, 2, 0, 0, 1, 3}, "position");
+    expectRows(e.normal, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}, "normal");
+}
+
+TEST(SkinPalette, RotationNormalMatrixIsTheRotation) {
+    // Rz(90): x -> y, y -> -x. Its inverse transpose is itself.
+    const Mat rz{0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    const PaletteEntry e = compute(rz, kIdentity);
+    expectRows(e.position, {0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0}, "position");
+    expectRows(e.normal, {0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0}, "normal");
+}
+
+TEST(SkinPalette, NonUniformScaleUsesInverseTranspose) {
+    // A = diag(2, 4, 0.5) with translation (1, 0, 0); at rest T(0, -1, 0).
+    // A x R = [2 0 0 1; 0 4 0 -4; 0 0 0.5 0]; normal = diag(1/2, 1/4, 2).
+    const Mat a{2, 0, 0, 1, 0, 4, 0, 0, 0, 0, 0.5f, 0, 0, 0, 0, 1};
+    const PaletteEntry e = compute(a, translation(0, -1, 0));
+    expectRows(e.position, {2, 0, 0, 1, 0, 4, 0, -4, 0, 0, 0.5f, 0}, "position");
+    expectRows(e.normal, {0.5f, 0, 0, 0, 0, 0.25f, 0, 0, 0, 0, 2, 0}, "normal");
+}
+
+TEST(SkinPalette, ShearInverseTranspose) {
+    // S = [1 1 0; 0 1 0; 0 0 1]; S^-1 = [1 -1 0; 0 1 0; 0 0 1];
+    // (S^-1)^T = [1 0 0; -1 1 0; 0 0 1].
+    const Mat s{1, 1, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    const PaletteEntry e = compute(s, kIdentity);
+    expectRows(e.normal, {1, 0, 0, 0, -1, 1, 0, 0, 0, 0, 1, 0}, "normal");
+}
+
+TEST(SkinPalette, AtRestAppliesFirst) {
+    // boneToMesh x atRest: T(5, 0, 0) x Rz(90) = [Rz(90) | (5, 0, 0)]; the
+    // other order would give the translation Rz(90) (5, 0, 0) = (0, 5, 0).
+    const Mat rz{0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    const PaletteEntry f = compute(translation(5, 0, 0), rz);
+    expectRows(f.position, {0, -1, 0, 5, 1, 0, 0, 0, 0, 0, 1, 0}, "T x R");
+}
+
+TEST(SkinPalette, SingularMatrixGivesCofactors) {
+    // diag(2, 3, 0) flattens z: cofactors = diag(3*0, 2*0, 2*3) = diag(0, 0, 6),
+    // so every normal maps to +z (the flattened plane's normal).
+    const Mat flat{2, 0, 0, 0, 0, 3, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1};
+    const PaletteEntry e = compute(flat, kIdentity);
+    expectRows(e.normal, {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 6, 0}, "normal");
+}
+
+TEST(SkinPalette, SeveralBonesAndTheBottomRowIsIgnored) {
+    // Bone 1's bottom row is not (0 0 0 1): only the top three rows count.
+    std::vector<float> a, r;
+    const Mat t1 = translation(1, 0, 0);
+    Mat t2 = translation(0, 7, 0);
+    t2[12] = 9.0f;
+    a.insert(a.end(), t1.begin(), t1.end());
+    a.insert(a.end(), t2.begin(), t2.end());
+    r.insert(r.end(), kIdentity.begin(), kIdentity.end());
+    r.insert(r.end(), kIdentity.begin(), kIdentity.end());
+    std::vector<PaletteEntry> out(2);
+    PaletteJob job;
+    job.boneCount = 2;
+    job.boneToMesh = a;
+    job.atRest = r;
+    job.output = out;
+    ASSERT_TRUE(job.run());
+    expectRows(out[0].position, {1, 0, 0, 1, 0, 1, 0, 0, 0, 0, 1, 0}, "bone 0");
+    expectRows(out[1].position, {1, 0, 0, 0, 0, 1, 0, 7, 0, 0, 1, 0}, "bone 1");
+}

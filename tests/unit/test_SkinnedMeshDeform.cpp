@@ -1,0 +1,419 @@
+// SkinnedMesh deformation end to end: SkinnedMesh + MeshDeformer with the
+// skin/ kernels (spec digest §4.10, §5.11, §8.9). Expected values are worked
+// out by hand in the comments; a random rig is checked against the
+// double-precision reference and the founding paper's baseline.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <m3g/AnimationController.h>
+#include <m3g/AnimationTrack.h>
+#include <m3g/Group.h>
+#include <m3g/KeyframeSequence.h>
+#include <m3g/Limits.h>
+#include <m3g/SkinnedMesh.h>
+#include <m3g/TriangleStripArray.h>
+
+#include "MeshDeformer.h"
+#include "SkinReference.h"
+
+using namespace m3g;
+using m3g::detail::MeshDeformer;
+using Shorts = std::vector<std::int16_t>;
+
+namespace {
+
+Ref<IndexBuffer> makeIB(int vertices) {
+    const int lengths[] = {vertices < 3 ? 3 : vertices};  // a strip needs 3 indices; validity is checked at render
+    return new TriangleStripArray(0, lengths);
+}
+
+Ref<VertexBuffer> makeVB(const Shorts& positions, float scale = 1.0f, std::array<float, 3> bias = {0, 0, 0},
+                         const Shorts& normals = {}) {
+    const int n = static_cast<int>(positions.size() / 3);
+    Ref<VertexBuffer> vb = new VertexBuffer();
+    Ref<VertexArray> p = new VertexArray(n, 3, 2);
+    p->set(0, n, positions);
+    vb->setPositions(p, scale, bias);
+    if (!normals.empty()) {
+        Ref<VertexArray> a = new VertexArray(n, 3, 2);
+        a->set(0, n, normals);
+        vb->setNormals(a);
+    }
+    return vb;
+}
+
+/// A short normal component as the renderer reads it: (2c + 1) / 65535.
+double unit(int c) { return (2.0 * c + 1.0) / 65535.0; }
+std::array<double, 3> normalised(double x, double y, double z) {
+    const double l = std::sqrt(x * x + y * y + z * z);
+    return {x / l, y / l, z / l};
+}
+
+struct Rig {
+    Ref<Group> skeleton = new Group();
+    std::vector<Ref<Group>> bones;
+    Ref<SkinnedMesh> mesh;
+    Rig(Ref<VertexBuffer> vb, int boneCount) {
+        for (int i = 0; i < boneCount; ++i) {
+            bones.push_back(new Group());
+            skeleton->addChild(bones.back());
+        }
+        mesh = new SkinnedMesh(vb, makeIB(vb->getVertexCount()), nullptr, skeleton);
+    }
+};
+
+void expectPosition(const MeshDeformer& d, int v, double x, double y, double z, double tol = 1e-5) {
+    const auto& p = d.vertices().positions;
+    ASSERT_GE(p.size(), static_cast<std::size_t>(v) * 3 + 3);
+    EXPECT_NEAR(p[v * 3], x, tol) << "vertex " << v << " x";
+    EXPECT_NEAR(p[v * 3 + 1], y, tol) << "vertex " << v << " y";
+    EXPECT_NEAR(p[v * 3 + 2], z, tol) << "vertex " << v << " z";
+}
+void expectNormal(const MeshDeformer& d, int v, std::array<double, 3> n, double tol = 1e-6) {
+    const auto& a = d.vertices().normals;
+    ASSERT_GE(a.size(), static_cast<std::size_t>(v) * 3 + 3);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[v * 3 + c], n[c], tol) << "vertex " << v << " normal " << c;
+}
+
+}  // namespace
+
+TEST(SkinnedMeshDeform, OneToFourInfluencesHandComputed) {
+    // Bones at the origin at rest; posed T(4,0,0), T(0,8,0), T(0,0,2), T(-10,-10,-10).
+    Rig r(makeVB({1, 0, 0, /**/ 0, 0, 0, /**/ 1, 1, 1, /**/ 1, 2, 3}), 4);
+    auto& b = r.bones;
+    r.mesh->addTransform(b[0], 1, 0, 4);  // every vertex: bone 0 weight 1
+    r.mesh->addTransform(b[1], 3, 1, 1);  // v1: 1 : 3
+    r.mesh->addTransform(b[1], 1, 2, 1);  // v2: 1 : 1 : 2
+    r.mesh->addTransform(b[2], 2, 2, 1);
+    r.mesh->addTransform(b[1], 2, 3, 1);  // v3: 1 : 2 : 3 : 4
+    r.mesh->addTransform(b[2], 3, 3, 1);
+    r.mesh->addTransform(b[3], 4, 3, 1);
+    b[0]->setTranslation(4, 0, 0);
+    b[1]->setTranslation(0, 8, 0);
+    b[2]->setTranslation(0, 0, 2);
+    b[3]->setTranslation(-10, -10, -10);
+    MeshDeformer d;
+    ASSERT_TRUE(d.update(*r.mesh));
+    EXPECT_EQ(d.vertices().vertexCount, 4);
+    expectPosition(d, 0, 5, 0, 0);  // (1,0,0) + (4,0,0)
+    expectPosition(d, 1, 1, 6, 0);  // 0.25 (4,0,0) + 0.75 (0,8,0)
+    expectPosition(d, 2, 2, 3, 2);  // (1,1,1) + 0.25 (4,0,0) + 0.25 (0,8,0) + 0.5 (0,0,2)
+    // (1,2,3) + 0.1 (4,0,0) + 0.2 (0,8,0) + 0.3 (0,0,2) + 0.4 (-10,-10,-10)
+    //   = (1 + 0.4 - 4, 2 + 1.6 - 4, 3 + 0.6 - 4) = (-2.6, -0.4, -0.4)
+    expectPosition(d, 3, -2.6, -0.4, -0.4);
+    EXPECT_TRUE(d.vertices().normals.empty());  // the VertexBuffer has none
+    EXPECT_TRUE(d.vertices().colors.empty());
+}
+
+TEST(SkinnedMeshDeform, AtRestPoseAndAncestorsBetweenBoneAndMesh) {
+    // The bone sits at (0, 5, 0) when added: at rest = T(0, -5, 0). Turning it
+    // 90 degrees about z moves vertex (1, 5, 0) (one unit along the bone's x)
+    // to (0, 6, 0), and normal (1, 0, 0) to (0, 1, 0).
+    Rig r(makeVB({1, 5, 0}, 1.0f, {0, 0, 0}, {32767, 0, 0}), 1);
+    r.bones[0]->setTranslation(0, 5, 0);
+    r.mesh->addTransform(r.bones[0], 1, 0, 1);
+    MeshDeformer d;
+    ASSERT_TRUE(d.update(*r.mesh));
+    expectPosition(d, 0, 1, 5, 0);  // at rest: unchanged
+    r.bones[0]->setOrientation(90, 0, 0, 1);
+    ASSERT_TRUE(d.update(*r.mesh));
+    expectPosition(d, 0, 0, 6, 0);
+    // Normal: Rz(90) (x, y, z) = (-y, x, z) with the GL mapping of (32767, 0, 0).
+    expectNormal(d, 0, normalised(-unit(0), unit(32767), unit(0)));
+    // Moving the skeleton root (between bone and mesh) moves the vertex.
+    r.skeleton->setTranslation(0, 0, 3);
+    ASSERT_TRUE(d.update(*r.mesh));
+    expectPosition(d, 0, 0, 6, 3);
+}
+
+TEST(SkinnedMeshDeform, OverlappingRangesWithDifferentWeights) {
+    // Six vertices at the origin; A posed T(4,0,0), B posed T(0,4,0).
+    Rig r(makeVB(Shorts(18, 0)), 2);
+    Node* a = r.bones[0];
+    Node* b = r.bones[1];
+    r.mesh->addTransform(a, 1, 0, 4);  // v0..v3
+    r.mesh->addTransform(b, 3, 2, 4);  // v2..v5
+    r.mesh->addTransform(a, 2, 3, 2);  // v3..v4: A accumulates
+    a->setTranslation(4, 0, 0);
+    b->setTranslation(0, 4, 0);
+    MeshDeformer d;
+    ASSERT_TRUE(d.update(*r.mesh));
+    expectPosition(d, 0, 4, 0, 0);        // A only
+    expectPosition(d, 1, 4, 0, 0);        // A only
+    expectPosition(d, 2, 1, 3, 0);        // A 1, B 3 -> 1/4, 3/4
+    expectPosition(d, 3, 2, 2, 0);        // A 1 + 2, B 3 -> 1/2, 1/2
+    expectPosition(d, 4, 1.6, 2.4, 0);    // A 2, B 3 -> 2/5, 3/5
+    expectPosition(d, 5, 0, 4, 0);        // B only
+}
+
+TEST(SkinnedMeshDeform, TopNReplacementAndTieRule) {
+    // N = 4 (the default limit). Five bones posed T(2^i, 0, 0), i = 0..4, so
+    // that each kept subset gives a different x. All vertices at the origin.
+    ASSERT_EQ(getLimits().maxTransformsPerVertex, 4);
+    Rig r(makeVB(Shorts(12, 0)), 5);
+    auto& b = r.bones;
+    // v0: weights 5, 4, 3, 2, 1: bone 4 (the smallest) is left out:
+    //     x = (5*1 + 4*2 + 3*4 + 2*8) / 14 = 41/14.
+    for (int i = 0; i < 5; ++i) r.mesh->addTransform(b[i], 5 - i, 0, 1);
+    // v1: all weights 3 (a tie for the last slot): the bones added first
+    //     (lower bone index) win; called in reverse order to show that the
+    //     call order on this vertex does not matter: x = (1+2+4+8)/4 = 3.75.
+    for (int i = 4; i >= 0; --i) r.mesh->addTransform(b[i], 3, 1, 1);
+    // v2: all weights 1 -> bone 4 out; one more unit for bone 4 (2 in all)
+    //     brings it in and pushes out bone 3 (the last of the weight-1 tie):
+    //     x = (2*16 + 1 + 2 + 4) / 5 = 39/5.
+    for (int i = 0; i < 5; ++i) r.mesh->addTransform(b[i], 1, 2, 1);
+    r.mesh->addTransform(b[4], 1, 2, 1);
+    // v3: bone 0 weight 1, bone 4 weight 10: x = (1*1 + 10*16) / 11.
+    r.mesh->addTransform(b[0], 1, 3, 1);
+    r.mesh->addTransform(b[4], 10, 3, 1);
+    for (int i = 0; i < 5; ++i) b[i]->setTranslation(static_cast<float>(1 << i), 0, 0);
+    MeshDeformer d;
+    ASSERT_TRUE(d.update(*r.mesh));
+    expectPosition(d, 0, 41.0 / 14.0, 0, 0);
+    expectPosition(d, 1, 3.75, 0, 0);
+    expectPosition(d, 2, 39.0 / 5.0, 0, 0);
+    expectPosition(d, 3, 161.0 / 11.0, 0, 0);
+}
+
+TEST(SkinnedMeshDeform, SmallerLimitReplacesTheLowestWeight) {
+    // N = 2 for a mesh created under that limit: three bones on one vertex,
+    // weights 1, 2, 3 -> bones 1 and 2 kept: x = (2*2 + 3*4) / 5 = 16/5.
+    struct Guard {
+        Limits saved = getLimits();
+        ~Guard() { setLimits(saved); }
+    } guard;
+    Limits two = getLimits();
+    two.maxTransformsPerVertex = 2;
+    setLimits(two);
+    Rig r(makeVB(Shorts(3, 0)), 3);
+    setLimits(guard.saved);
+    for (int i = 0; i < 3; ++i) {
+        r.mesh->addTransform(r.bones[i], i + 1, 0, 1);
+        r.bones[i]->setTranslation(static_cast<float>(1 << i), 0, 0);
+    }
+    MeshDeformer d;
+    ASSERT_TRUE(d.update(*r.mesh));
+    expectPosition(d, 0, 16.0 / 5.0, 0, 0);
+}
+
+TEST(SkinnedMeshDeform, VertexWithNoBoneStaysInMeshSpace) {
+    // Positions 0.5 * raw + (1, 1, 1). v0 has a bone (posed T(1,0,0)); v1 has
+    // none (inside the table's range: v2 has one); v3 lies beyond every range.
+    // Unskinned vertices keep scale * v + bias and get a unit normal.
+    Rig r(makeVB({2, 4, 6, /**/ 2, 4, 6, /**/ 0, 0, 0, /**/ -2, 0, 2}, 0.5f, {1, 1, 1},
+                 {0, 0, 32767, /**/ 32767, 32767, 0, /**/ 0, 32767, 0, /**/ 0, 0, -32768}),
+          1);
+    r.mesh->addTransform(r.bones[0], 1, 0, 1);
+    r.mesh->addTransform(r.bones[0], 1, 2, 1);
+    r.bones[0]->setTranslation(1, 0, 0);
+    MeshDeformer d;
+    ASSERT_TRUE(d.update(*r.mesh));
+    expectPosition(d, 0, 3, 3, 4);  // 0.5 (2,4,6) + (1,1,1) = (2,3,4), then + (1,0,0)
+    expectPosition(d, 1, 2, 3, 4);  // no bone: mesh space
+    expectPosition(d, 2, 2, 1, 1);  // (1,1,1) + (1,0,0)
+    expectPosition(d, 3, 0, 1, 2);  // beyond the table: mesh space
+    expectNormal(d, 1, normalised(unit(32767), unit(32767), unit(0)));
+    expectNormal(d, 3, normalised(unit(0), unit(0), unit(-32768)));
+}
+
+TEST(SkinnedMeshDeform, NonUniformBoneScaleUsesInverseTransposeForNormals) {
+    // Bone scaled (2, 1, 1) after the rest pose. Position (1, 1, 0) -> (2, 1, 0).
+    // Normal n -> diag(1/2, 1, 1) n, renormalised: for n ~ (1, 1, 0) that is
+    // (1, 2, 0) / sqrt 5 (the matrix itself would tilt it the other way).
+    Rig r(makeVB({1, 1, 0}, 1.0f, {0, 0, 0}, {32767, 32767, 0}), 1);
+    r.mesh->addTransform(r.bones[0], 1, 0, 1);
+    r.bones[0]->setScale(2, 1, 1);
+    MeshDeformer d;
+    ASSERT_TRUE(d.update(*r.mesh));
+    expectPosition(d, 0, 2, 1, 0);
+    expectNormal(d, 0, normalised(0.5 * unit(32767), unit(32767), unit(0)));
+}
+
+TEST(SkinnedMeshDeform, RecomputesOnlyWhenAnInputChanged) {
+    Ref<Group> world = new Group();
+    Ref<Group> joint = new Group();  // between the skeleton root and the bone
+    Rig r(makeVB({1, 0, 0, /**/ 0, 1, 0}, 1.0f, {0, 0, 0}, {32767, 0, 0, /**/ 0, 32767, 0}), 0);
+    Ref<Group> bone = new Group();
+    r.skeleton->addChild(joint);
+    joint->addChild(bone);
+    world->addChild(r.mesh);
+    r.mesh->addTransform(bone, 1, 0, 1);
+
+    MeshDeformer d;
+    EXPECT_TRUE(d.update(*r.mesh));  // first call
+    EXPECT_EQ(d.stamp(), 1u);
+    EXPECT_FALSE(d.update(*r.mesh));  // nothing changed
+    EXPECT_EQ(d.stamp(), 1u);
+    expectPosition(d, 0, 1, 0, 0);
+
+    bone->setTranslation(0, 0, 1);  // the bone moves
+    EXPECT_TRUE(d.update(*r.mesh));
+    expectPosition(d, 0, 1, 0, 1);
+    bone->setTranslation(0, 0, 1);  // same pose again: same palette
+    EXPECT_FALSE(d.update(*r.mesh));
+
+    joint->setTranslation(0, 2, 0);  // an ancestor between bone and mesh
+    EXPECT_TRUE(d.update(*r.mesh));
+    expectPosition(d, 0, 1, 2, 1);
+
+    // The mesh's own transform and its parents do not change mesh-space vertices.
+    r.mesh->setTranslation(100, 0, 0);
+    world->setScale(3, 3, 3);
+    EXPECT_FALSE(d.update(*r.mesh));
+    EXPECT_EQ(d.stamp(), 3u);
+
+    // animate() on the joint: a translation track.
+    Ref<KeyframeSequence> seq = new KeyframeSequence(1, 3, KeyframeSequence::LINEAR);
+    const float key[] = {0, 5, 0};
+    seq->setKeyframe(0, 0, key);
+    seq->setDuration(1000);
+    Ref<AnimationTrack> track = new AnimationTrack(seq, AnimationTrack::TRANSLATION);
+    track->setController(new AnimationController());
+    joint->addAnimationTrack(track);
+    world->animate(0);
+    EXPECT_TRUE(d.update(*r.mesh));
+    expectPosition(d, 0, 1, 5, 1);
+    world->animate(10);  // same value: same palette
+    EXPECT_FALSE(d.update(*r.mesh));
+
+    r.mesh->addTransform(bone, 1, 1, 1);  // the influence table changes
+    EXPECT_TRUE(d.update(*r.mesh));
+    expectPosition(d, 1, 0, 6, 1);
+    EXPECT_FALSE(d.update(*r.mesh));
+
+    // Vertex data: a VertexArray edited in place, then replaced, then scale/bias.
+    const std::int16_t moved[] = {2, 0, 0};
+    r.mesh->getVertexBuffer()->getPositions()->set(0, 1, moved);
+    EXPECT_TRUE(d.update(*r.mesh));
+    expectPosition(d, 0, 2, 5, 1);
+    const std::int16_t turned[] = {0, 0, 32767};
+    r.mesh->getVertexBuffer()->getNormals()->set(0, 1, turned);
+    EXPECT_TRUE(d.update(*r.mesh));
+    expectNormal(d, 0, normalised(unit(0), unit(0), unit(32767)));
+    EXPECT_FALSE(d.update(*r.mesh));
+    const float bias[] = {0, 0, 10};
+    r.mesh->getVertexBuffer()->setPositions(r.mesh->getVertexBuffer()->getPositions(), 1.0f, bias);
+    EXPECT_TRUE(d.update(*r.mesh));
+    expectPosition(d, 0, 2, 5, 11);
+    Ref<VertexArray> other = new VertexArray(2, 3, 2);
+    const std::int16_t values[] = {3, 0, 0, 0, 3, 0};
+    other->set(0, 2, values);
+    r.mesh->getVertexBuffer()->setPositions(other, 1.0f, bias);
+    EXPECT_TRUE(d.update(*r.mesh));
+    expectPosition(d, 0, 3, 5, 11);
+    EXPECT_FALSE(d.update(*r.mesh));
+
+    // Another mesh through the same deformer, then a plain Mesh.
+    Rig second(makeVB({7, 7, 7}), 1);
+    EXPECT_TRUE(d.update(*second.mesh));
+    expectPosition(d, 0, 7, 7, 7);
+    EXPECT_FALSE(d.update(*second.mesh));
+    Ref<Mesh> plain = new Mesh(makeVB({1, 1, 1}), makeIB(1), nullptr);
+    const auto stamp = d.stamp();
+    EXPECT_FALSE(d.update(*plain));
+    EXPECT_TRUE(d.vertices().positions.empty());
+    EXPECT_EQ(d.stamp(), stamp);
+    EXPECT_TRUE(d.update(*second.mesh));  // back to a deformed mesh
+}
+
+TEST(SkinnedMeshDeform, RandomRigAgreesWithReferenceAndPaperBaseline) {
+    std::mt19937 rng(2024);
+    const int n = 600;
+    // Skeleton: a random tree of 24 groups with random transforms (rotation,
+    // non-uniform scale, translation) at rest.
+    Shorts pos, nrm;
+    std::uniform_int_distribution<int> coord(-3000, 3000), comp(-32768, 32767);
+    for (int i = 0; i < n * 3; ++i) {
+        pos.push_back(static_cast<std::int16_t>(coord(rng)));
+        nrm.push_back(static_cast<std::int16_t>(comp(rng)));
+    }
+    const float scale = 0.003f;
+    const std::array<float, 3> bias{0.25f, -0.5f, 1.0f};
+    Ref<VertexBuffer> vb = makeVB(pos, scale, bias, nrm);
+    Ref<Group> skeleton = new Group();
+    std::vector<Ref<Group>> nodes{skeleton};
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f), s(0.6f, 1.6f);
+    auto randomPose = [&](Group* g) {
+        g->setTranslation(2 * u(rng), 2 * u(rng), 2 * u(rng));
+        g->setOrientation(180 * u(rng), u(rng), u(rng), u(rng) + 0.01f);
+        g->setScale(s(rng), s(rng), s(rng));
+    };
+    for (int i = 0; i < 24; ++i) {
+        Ref<Group> g = new Group();
+        std::uniform_int_distribution<std::size_t> parent(0, nodes.size() - 1);
+        nodes[parent(rng)]->addChild(g);
+        randomPose(g);
+        nodes.push_back(g);
+    }
+    Ref<SkinnedMesh> mesh = new SkinnedMesh(vb, makeIB(n), nullptr, skeleton);
+    // 250 records, weights 1..5, ranges up to 30 vertices: 0 to ~10 bones a vertex.
+    std::vector<m3gtest::WeightedTransform> records;
+    std::uniform_int_distribution<int> node(1, 24), weight(1, 5), first(0, n - 1), len(1, 30);
+    for (int i = 0; i < 250; ++i) {
+        Group* bone = nodes[static_cast<std::size_t>(node(rng))];
+        const int f = first(rng), c = std::min(len(rng), n - f), w = weight(rng);
+        mesh->addTransform(bone, w, f, c);
+        records.push_back({mesh->boneIndex(bone), w, f, c});
+    }
+    for (std::size_t i = 1; i < nodes.size(); ++i) randomPose(nodes[i]);  // a new pose
+    MeshDeformer d;
+    ASSERT_TRUE(d.update(*mesh));
+
+    // Inputs for the reference and the baseline, through the public API.
+    std::vector<float> toMesh, rest;
+    for (int b = 0; b < mesh->boneCount(); ++b) {
+        Transform t;
+        mesh->bone(b)->getTransformTo(mesh, &t);
+        toMesh.insert(toMesh.end(), t.rows().begin(), t.rows().end());
+        mesh->getBoneTransform(mesh->bone(b), &t);
+        rest.insert(rest.end(), t.rows().begin(), t.rows().end());
+    }
+    std::vector<double> meshPos, meshNrm;
+    for (int i = 0; i < n * 3; ++i) {
+        meshPos.push_back(double(scale) * pos[i] + bias[i % 3]);
+        meshNrm.push_back(unit(nrm[i]));
+    }
+    const std::vector<double> a(toMesh.begin(), toMesh.end()), r(rest.begin(), rest.end());
+    const auto ref = m3gtest::referenceSkin(records, 4, a, r, n, meshPos, meshNrm);
+    EXPECT_TRUE(m3gtest::closeXyz(d.vertices().positions, ref.positions));
+    EXPECT_TRUE(m3gtest::closeXyz(d.vertices().normals, ref.normals));
+
+    std::vector<float> pf(meshPos.begin(), meshPos.end()), nf(meshNrm.begin(), meshNrm.end()), bp(pf.size()),
+        bn(nf.size());
+    m3gbench::SkinBaseline baseline(4);
+    baseline.deform(records, static_cast<std::size_t>(mesh->boneCount()), toMesh, rest, n, pf, nf, bp, bn);
+    EXPECT_TRUE(m3gtest::closeXyz(d.vertices().positions, bp));
+    EXPECT_TRUE(m3gtest::closeXyz(d.vertices().normals, bn));
+}
+
+TEST(SkinnedMeshDeform, LargeMeshTakesTheParallelPath) {
+    // 40000 vertices (above MeshDeformer's threshold for the thread pool):
+    // bone A on [0, 30000) weight 1, bone B on [10000, 40000) weight 3.
+    // Posed A = T(4, 0, 0), B = T(0, 4, 0): x-range only A -> +(4,0,0);
+    // both -> +(1, 3, 0); only B -> +(0, 4, 0).
+    const int n = 40000;
+    Shorts pos(static_cast<std::size_t>(n) * 3);
+    for (int v = 0; v < n; ++v) pos[static_cast<std::size_t>(v) * 3] = static_cast<std::int16_t>(v % 1000);
+    Rig r(makeVB(pos), 2);
+    r.mesh->addTransform(r.bones[0], 1, 0, 30000);
+    r.mesh->addTransform(r.bones[1], 3, 10000, 30000);
+    r.bones[0]->setTranslation(4, 0, 0);
+    r.bones[1]->setTranslation(0, 4, 0);
+    MeshDeformer d;
+    ASSERT_TRUE(d.update(*r.mesh));
+    for (int v : {0, 9999, 10000, 25000, 29999, 30000, 39999}) {
+        const double x = v % 1000;
+        if (v < 10000)
+            expectPosition(d, v, x + 4, 0, 0);
+        else if (v < 30000)
+            expectPosition(d, v, x + 1, 3, 0);
+        else
+            expectPosition(d, v, x, 4, 0);
+    }
+    EXPECT_FALSE(d.update(*r.mesh));
+}
