@@ -78,7 +78,7 @@ TEST_F(VkTest, BlendingModesOnKnownBackground) {
         EXPECT_PIXEL(*img, 7 + 12 * i, 32, Rgba{out[0], out[1], out[2], out[3]});
     }
     EXPECT_PIXEL_TOL(*img, 62, 32, 0, Rgba{64, 128, 192, 128});  // untouched
-    expectGolden(*img, "compositing_blending");
+    expectGolden(*img, "compositing_blending", 3, 0.0);
 }
 
 TEST_F(VkTest, AlphaThreshold) {
@@ -99,7 +99,7 @@ TEST_F(VkTest, AlphaThreshold) {
     EXPECT_PIXEL_TOL(*img, 48, 16, 0, Rgba{0, 0, 0, 255});      // 128/255 < 0.51: discarded
     EXPECT_PIXEL_TOL(*img, 16, 48, 0, Rgba{0, 0, 255, 0});      // alpha 0 passes threshold 0
     EXPECT_PIXEL_TOL(*img, 48, 48, 0, Rgba{255, 255, 255, 255});  // 1.0 >= 1.0
-    expectGolden(*img, "compositing_alpha_threshold");
+    expectGolden(*img, "compositing_alpha_threshold", 3, 0.0);
 }
 
 TEST_F(VkTest, DepthTestOffStillWritesDepth) {
@@ -123,7 +123,7 @@ TEST_F(VkTest, DepthTestOffStillWritesDepth) {
     EXPECT_PIXEL_TOL(*img, 48, 16, 0, Rgba{255, 255, 255, 255});
     EXPECT_PIXEL_TOL(*img, 16, 48, 0, Rgba{0, 255, 0, 255});
     EXPECT_PIXEL_TOL(*img, 48, 48, 0, Rgba{0, 255, 0, 255});
-    expectGolden(*img, "compositing_depth_test_off");
+    expectGolden(*img, "compositing_depth_test_off", 3, 0.0);
 }
 
 TEST_F(VkTest, DepthWriteOff) {
@@ -142,7 +142,7 @@ TEST_F(VkTest, DepthWriteOff) {
     g->releaseTarget();
     EXPECT_PIXEL_TOL(*img, 16, 32, 0, Rgba{0, 255, 0, 255});
     EXPECT_PIXEL_TOL(*img, 48, 32, 0, Rgba{255, 0, 0, 255});
-    expectGolden(*img, "compositing_depth_write_off");
+    expectGolden(*img, "compositing_depth_write_off", 3, 0.0);
 }
 
 TEST_F(VkTest, DepthOffset) {
@@ -176,7 +176,7 @@ TEST_F(VkTest, DepthOffset) {
     EXPECT_PIXEL_TOL(*img, 48, 16, 0, Rgba{255, 0, 0, 255});
     EXPECT_PIXEL_TOL(*img, 16, 48, 0, Rgba{255, 0, 0, 255});
     EXPECT_PIXEL_TOL(*img, 48, 48, 0, Rgba{0, 255, 0, 255});
-    expectGolden(*img, "compositing_depth_offset");
+    expectGolden(*img, "compositing_depth_offset", 3, 0.01);
 }
 
 TEST_F(VkTest, ColorAndAlphaWriteMasks) {
@@ -194,7 +194,7 @@ TEST_F(VkTest, ColorAndAlphaWriteMasks) {
     g->releaseTarget();
     EXPECT_PIXEL_TOL(*img, 16, 32, 0, Rgba{0, 0, 255, 64});
     EXPECT_PIXEL_TOL(*img, 48, 32, 0, Rgba{255, 0, 0, 255});
-    expectGolden(*img, "compositing_write_masks");
+    expectGolden(*img, "compositing_write_masks", 3, 0.0);
 }
 
 TEST_F(VkTest, PolygonModeCullingAndWinding) {
@@ -222,7 +222,7 @@ TEST_F(VkTest, PolygonModeCullingAndWinding) {
             const int v = visible[row][col] ? 255 : 0;
             EXPECT_PIXEL_TOL(*img, 10 + 21 * col, 16 + 32 * row, 0, Rgba{v, v, v, v});
         }
-    expectGolden(*img, "polygon_culling_winding");
+    expectGolden(*img, "polygon_culling_winding", 3, 0.0);
 }
 
 TEST_F(VkTest, NodeAlphaFactorIsProductAlongPath) {
@@ -267,5 +267,5 @@ TEST_F(VkTest, NodeAlphaFactorIsProductAlongPath) {
     EXPECT_PIXEL(*img, 31, 32, Rgba{255, 255, 255, 255});
     const double a = c8(0x80) * 0.25;
     EXPECT_PIXEL(*img, 53, 32, Rgba{level(0.8 * a), level(0.8 * a), level(0.8 * a), over(a, a, 1.0)});
-    expectGolden(*img, "node_alpha_factor");
+    expectGolden(*img, "node_alpha_factor", 3, 0.0);
 }

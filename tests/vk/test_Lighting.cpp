@@ -86,7 +86,7 @@ TEST_F(VkTest, LightingAmbient) {
     g->releaseTarget();
     const double a = c8(0x80);
     EXPECT_PIXEL(*img, 32, 32, Rgba{level(a * 1.0), level(a * c8(0x80)), level(a * c8(0x40)), 255});
-    expectGolden(*img, "lighting_ambient");
+    expectGolden(*img, "lighting_ambient", 3, 0.0);
 }
 
 TEST_F(VkTest, LightingDirectional) {
@@ -111,7 +111,7 @@ TEST_F(VkTest, LightingDirectional) {
     EXPECT_PIXEL(*img, 16, 32, grey(0.8, 255));
     EXPECT_PIXEL(*img, 48, 32, Rgba{level(0.8 * kCos60), level(0.8 * kCos60 * c8(0x80)), 0, 255});  // ~102, 51, 0
     EXPECT_PIXEL(*img, 40, 5, Rgba{level(0.8 * kCos60), -1, -1, -1});
-    expectGolden(*img, "lighting_directional");
+    expectGolden(*img, "lighting_directional", 3, 0.0);
 }
 
 TEST_F(VkTest, LightingOmniAttenuation) {
@@ -139,7 +139,7 @@ TEST_F(VkTest, LightingOmniAttenuation) {
         SCOPED_TRACE(q);
         EXPECT_PIXEL(*img, kCentreX[q], kCentreY[q], grey(a * nDotL, 255));  // 147, 170, 196, 56
     }
-    expectGolden(*img, "lighting_omni_attenuation");
+    expectGolden(*img, "lighting_omni_attenuation", 3, 0.0);
 }
 
 TEST_F(VkTest, LightingSpotCutoffAndExponent) {
@@ -169,7 +169,7 @@ TEST_F(VkTest, LightingSpotCutoffAndExponent) {
         // 147 (cone wide enough), 0 (corners outside the 50-degree cone), 49, 85
         EXPECT_PIXEL(*img, kCentreX[q], kCentreY[q], grey(inside * std::pow(cosT, exponent[q]) * cosT, 255));
     }
-    expectGolden(*img, "lighting_spot");
+    expectGolden(*img, "lighting_spot", 3, 0.0);
 }
 
 TEST_F(VkTest, LightingMaterialComponents) {
@@ -203,7 +203,7 @@ TEST_F(VkTest, LightingMaterialComponents) {
     EXPECT_PIXEL(*img, kCentreX[2], kCentreY[2], Rgba{0xC0, 0x80, 0x40, 255});
     // Specular: H halfway between L (60 degrees) and the viewer +Z: N.H = cos 30.
     EXPECT_PIXEL(*img, kCentreX[3], kCentreY[3], grey(std::pow(kCos30, 10.0) * c8(0x80), 255));  // ~30
-    expectGolden(*img, "lighting_material");
+    expectGolden(*img, "lighting_material", 3, 0.0);
 }
 
 TEST_F(VkTest, LightingVertexColorTracking) {
@@ -230,7 +230,7 @@ TEST_F(VkTest, LightingVertexColorTracking) {
     const double k = 1.0 + c8(0x40);  // ambient light 0.25 + directional 1.0
     EXPECT_PIXEL(*img, 16, 32, Rgba{level(c8(0x40) * k), level(c8(0x80) * k), level(c8(0xC0) * k), 0x80});
     EXPECT_PIXEL(*img, 48, 32, grey(0.2 * c8(0x40) + 0.8, 255));
-    expectGolden(*img, "lighting_color_tracking");
+    expectGolden(*img, "lighting_color_tracking", 3, 0.0);
 }
 
 TEST_F(VkTest, LightingTwoSided) {
@@ -271,12 +271,13 @@ TEST_F(VkTest, LightingTwoSided) {
         SCOPED_TRACE(q);
         EXPECT_PIXEL(*img, kCentreX[q], kCentreY[q], grey(cases[q].expected, 255));
     }
-    expectGolden(*img, "lighting_two_sided");
+    expectGolden(*img, "lighting_two_sided", 3, 0.0);
 }
 
 TEST_F(VkTest, LightingScopeInWorld) {
     // Light scope against mesh scope (not the camera's): white light scope 2,
-    // red light scope 4; meshes with scope 1, 2 and 6.
+    // red light scope 4; meshes with scope 1, 2 and 6. A third light (scope
+    // 1) is under a group with rendering disabled, so it is not collected.
     auto img = target(64, 64);
     Ref<World> world(new World());
     Ref<Camera> cam(new Camera());
@@ -288,6 +289,12 @@ TEST_F(VkTest, LightingScopeInWorld) {
     red->setScope(4);
     world->addChild(white.get());
     world->addChild(red.get());
+    Ref<Group> disabled(new Group());
+    disabled->setRenderingEnable(false);
+    Ref<Light> hidden = light(Light::DIRECTIONAL);
+    hidden->setScope(1);
+    disabled->addChild(hidden.get());
+    world->addChild(disabled.get());
     auto app = appearance(material(0x000000, 0xFFCCCCCC).get());
     const int scopes[3] = {1, 2, 6};
     std::vector<Ref<Mesh>> meshes;
@@ -306,7 +313,7 @@ TEST_F(VkTest, LightingScopeInWorld) {
     EXPECT_PIXEL(*img, 10, 32, Rgba{0, 0, 0, 255});
     EXPECT_PIXEL(*img, 31, 32, grey(w, 255));
     EXPECT_PIXEL(*img, 52, 32, Rgba{level(2 * w), level(w), level(w), 255});
-    expectGolden(*img, "lighting_scope_world");
+    expectGolden(*img, "lighting_scope_world", 3, 0.0);
 }
 
 TEST_F(VkTest, LightingEightLights) {
@@ -332,7 +339,7 @@ TEST_F(VkTest, LightingEightLights) {
     g->releaseTarget();
     EXPECT_PIXEL(*img, 16, 32, Rgba{144, 144, 144, -1});
     EXPECT_PIXEL(*img, 48, 32, Rgba{144, 144, 144, -1});
-    expectGolden(*img, "lighting_eight_lights");
+    expectGolden(*img, "lighting_eight_lights", 3, 0.0);
 }
 
 TEST_F(VkTest, LightingRenormalisedNormals) {
@@ -360,7 +367,7 @@ TEST_F(VkTest, LightingRenormalisedNormals) {
     EXPECT_PIXEL(*img, 16, 32, grey(0.8, 255));
     EXPECT_PIXEL(*img, 48, 32, grey(0.8 * 2.0 / std::sqrt(5.0), 255));  // 182
     EXPECT_PIXEL(*img, 48, 8, Rgba{0, 0, 0, 0});                        // outside the stretched quad
-    expectGolden(*img, "lighting_renormalised_normals");
+    expectGolden(*img, "lighting_renormalised_normals", 3, 0.0);
 }
 
 TEST_F(VkTest, LightingIntensityAboveOneAndNegative) {
@@ -394,7 +401,7 @@ TEST_F(VkTest, LightingIntensityAboveOneAndNegative) {
         SCOPED_TRACE(q);
         EXPECT_PIXEL(*img, kCentreX[q], kCentreY[q], grey(cases[q].expected, 255));
     }
-    expectGolden(*img, "lighting_intensity");
+    expectGolden(*img, "lighting_intensity", 3, 0.0);
 }
 
 TEST_F(VkTest, UnlitVertexColorsAndDefaultColor) {
@@ -412,7 +419,7 @@ TEST_F(VkTest, UnlitVertexColorsAndDefaultColor) {
     g->releaseTarget();
     EXPECT_PIXEL_TOL(*img, 16, 32, 0, Rgba{0xFF, 0x80, 0x40, 0x80});
     EXPECT_PIXEL_TOL(*img, 48, 32, 0, Rgba{0x20, 0x40, 0x80, 0xC0});
-    expectGolden(*img, "unlit_colors");
+    expectGolden(*img, "unlit_colors", 3, 0.0);
 }
 
 TEST_F(VkTest, FlatShadingUsesLastVertexSmoothInterpolates) {
@@ -451,7 +458,7 @@ TEST_F(VkTest, FlatShadingUsesLastVertexSmoothInterpolates) {
     EXPECT_PIXEL_TOL(*img, 40, 40, 0, Rgba{0, 0, 255, 255});
     EXPECT_PIXEL_TOL(*img, 61, 2, 0, Rgba{255, 255, 255, 255});
     EXPECT_PIXEL_TOL(*img, 56, 24, 0, Rgba{255, 255, 255, 255});
-    expectGolden(*img, "shading_flat_smooth");
+    expectGolden(*img, "shading_flat_smooth", 3, 0.002);
 }
 
 TEST_F(VkTest, FogLinearAndExponential) {
@@ -487,5 +494,99 @@ TEST_F(VkTest, FogLinearAndExponential) {
         SCOPED_TRACE(q);
         EXPECT_PIXEL(*img, kCentreX[q], kCentreY[q], Rgba{level(f[q]), 0, level(1 - f[q]), 255});
     }
-    expectGolden(*img, "fog_linear_exponential");
+    expectGolden(*img, "fog_linear_exponential", 3, 0.0);
+}
+
+namespace {
+
+/// Pixel (x, y) of world point p seen by `camera` placed by `cameraToWorld`
+/// in a size x size viewport.
+std::array<int, 2> projectToPixel(const Camera& camera, Transform cameraToWorld, float x, float y, float z, int size) {
+    Transform projection;
+    camera.getProjection(&projection);
+    cameraToWorld.invert();
+    const Transform m = projection * cameraToWorld;
+    float v[4] = {x, y, z, 1};
+    m.transform(v);
+    const double nx = v[0] / v[3], ny = v[1] / v[3];
+    return {static_cast<int>(std::floor((nx + 1) / 2 * size)), static_cast<int>(std::floor((1 - ny) / 2 * size))};
+}
+
+}  // namespace
+
+TEST_F(VkTest, LightingStaysInWorldUnderMovingCamera) {
+    // render(World) with a perspective camera moved and turned 15 degrees
+    // about Y: lights are placed in the World, so a directional light along
+    // -Z still gives N.L = 1 on the left quad (scope 1) and an omni light
+    // 0.5 above the right quad's centre still gives N.L = 0.5 / sqrt(0.75)
+    // at every corner (scope 2). Lights taken in camera space would differ.
+    auto img = target(64, 64);
+    Ref<World> world(new World());
+    Ref<Camera> cam(new Camera());
+    cam->setPerspective(60, 1, 0.5f, 50);
+    cam->setTranslation(0.5f, 0.25f, 0.5f);
+    cam->setOrientation(15, 0, 1, 0);
+    world->addChild(cam.get());
+    world->setActiveCamera(cam.get());
+    Ref<Light> dir = light(Light::DIRECTIONAL);
+    dir->setScope(1);
+    Ref<Light> omni = light(Light::OMNI);
+    omni->setScope(2);
+    omni->setTranslation(0.625f, 0, -3.5f);
+    world->addChild(dir.get());
+    world->addChild(omni.get());
+    auto app = appearance(material(0x000000, 0xFFCCCCCC).get());
+    Quad left = makeQuad(-1.125f, -0.5f, -0.125f, 0.5f, -4.0f), right = makeQuad(0.125f, -0.5f, 1.125f, 0.5f, -4.0f);
+    Ref<Mesh> leftMesh(new Mesh(left.vb.get(), left.ib.get(), app.get()));
+    leftMesh->setScope(1);
+    Ref<Mesh> rightMesh(new Mesh(right.vb.get(), right.ib.get(), app.get()));
+    rightMesh->setScope(2);
+    world->addChild(leftMesh.get());
+    world->addChild(rightMesh.get());
+    Graphics3D* g = Graphics3D::getInstance();
+    g->bindTarget(img.get());
+    g->render(world.get());
+    g->releaseTarget();
+    Transform camToWorld;
+    cam->getCompositeTransform(&camToWorld);
+    const auto l = projectToPixel(*cam, camToWorld, -0.625f, 0, -4, 64);
+    const auto r = projectToPixel(*cam, camToWorld, 0.625f, 0, -4, 64);
+    EXPECT_PIXEL(*img, l[0], l[1], grey(0.8, 255));
+    EXPECT_PIXEL(*img, r[0], r[1], grey(0.8 * 0.5 / std::sqrt(0.75), 255));
+    expectGolden(*img, "lighting_moving_camera", 3, 0.01);
+}
+
+TEST_F(VkTest, FlatShadingLitUsesLastVertex) {
+    // Lit quads, light along the normal, diffuse 0.8; vertex 2 (top-left) has
+    // a normal tilted 45 degrees (0.8 cos 45 = 144), the others face +Z (204).
+    // Smooth on the left; flat on the right: triangle (v0 v1 v2) takes
+    // vertex 2's colour, triangle (v1 v2 v3) vertex 3's.
+    auto img = target(64, 64);
+    Ref<Camera> cam(new Camera());
+    Graphics3D* g = begin(img.get(), cam.get());
+    g->clear(nullptr);
+    Ref<Light> head = light(Light::DIRECTIONAL);
+    g->addLight(head.get(), nullptr);
+    Ref<VertexArray> normals(new VertexArray(4, 3, 1));
+    const std::int8_t n[] = {0, 0, 127, 0, 0, 127, 0, 90, 90, 0, 0, 127};
+    normals->set(0, 4, std::span<const std::int8_t>(n));
+    Ref<Material> mat = material(0x000000, 0xFFCCCCCC);
+    Quad left = makeQuad(-1, -1, 0, 1), right = makeQuad(0, -1, 1, 1);
+    left.vb->setNormals(normals.get());
+    right.vb->setNormals(normals.get());
+    g->render(left.vb.get(), left.ib.get(), appearance(mat.get()).get(), nullptr);
+    Ref<PolygonMode> pm(new PolygonMode());
+    pm->setShading(PolygonMode::SHADE_FLAT);
+    g->render(right.vb.get(), right.ib.get(), appearance(mat.get(), pm.get()).get(), nullptr);
+    g->releaseTarget();
+    const double tilted = 0.8 * std::sqrt(0.5);
+    {
+        const double v = 23.5 / 64;  // weight of vertex 2 at pixel (8, 40)
+        EXPECT_PIXEL(*img, 8, 40, grey(0.8 * (1 - v) + tilted * v, 255));
+    }
+    EXPECT_PIXEL(*img, 40, 40, grey(tilted, 255));
+    EXPECT_PIXEL(*img, 34, 61, grey(tilted, 255));
+    EXPECT_PIXEL(*img, 56, 24, grey(0.8, 255));
+    EXPECT_PIXEL(*img, 61, 2, grey(0.8, 255));
+    expectGolden(*img, "shading_flat_lit", 3, 0.002);
 }

@@ -65,7 +65,7 @@ TEST_F(VkTest, AppearanceLayerOrder) {
     g->releaseTarget();
     EXPECT_PIXEL_TOL(*img, 16, 32, 0, kRed);
     EXPECT_PIXEL_TOL(*img, 48, 32, 0, kBlue);
-    expectGolden(*img, "order_layers");
+    expectGolden(*img, "order_layers", 3, 0.0);
 }
 
 TEST_F(VkTest, OpaqueBeforeBlendedWithinLayer) {
@@ -89,7 +89,7 @@ TEST_F(VkTest, OpaqueBeforeBlendedWithinLayer) {
     const double a = 0x80 / 255.0;
     EXPECT_PIXEL(*img, 16, 32, Rgba{m3gtest::level(1 - a), 0, m3gtest::level(a), -1});
     EXPECT_PIXEL_TOL(*img, 48, 32, 0, Rgba{255, 0, 0, -1});
-    expectGolden(*img, "order_opaque_before_blended");
+    expectGolden(*img, "order_opaque_before_blended", 3, 0.0);
 }
 
 TEST_F(VkTest, RenderNodeIgnoresOwnTransformAppliesChildren) {
@@ -129,7 +129,7 @@ TEST_F(VkTest, RenderNodeIgnoresOwnTransformAppliesChildren) {
     EXPECT_PIXEL_TOL(*img, 16, 16, 0, kClear);  // where the group's own translation would put it
     EXPECT_PIXEL_TOL(*img, 52, 12, 0, kBlue);
     EXPECT_PIXEL_TOL(*img, 40, 32, 0, kClear);
-    expectGolden(*img, "order_render_node");
+    expectGolden(*img, "order_render_node", 3, 0.0);
 }
 
 TEST_F(VkTest, ImmediateModeScope) {
@@ -148,7 +148,7 @@ TEST_F(VkTest, ImmediateModeScope) {
     g->releaseTarget();
     EXPECT_PIXEL_TOL(*img, 16, 32, 0, kClear);
     EXPECT_PIXEL_TOL(*img, 48, 32, 0, kGreen);
-    expectGolden(*img, "order_immediate_scope");
+    expectGolden(*img, "order_immediate_scope", 3, 0.0);
 }
 
 TEST_F(VkTest, NearPlaneClipsTriangle) {
@@ -195,7 +195,7 @@ TEST_F(VkTest, NearPlaneClipsTriangle) {
         }
     EXPECT_EQ(bad, 0);
     EXPECT_GT(checked, 3500);
-    expectGolden(*img, "order_near_plane_clip");
+    expectGolden(*img, "order_near_plane_clip", 3, 0.01);
 }
 
 TEST_F(VkTest, SkinnedMeshDrawsDeformedVertices) {
@@ -220,7 +220,7 @@ TEST_F(VkTest, SkinnedMeshDrawsDeformedVertices) {
     EXPECT_PIXEL_TOL(*img, 55, 39, 0, kRed);
     EXPECT_PIXEL_TOL(*img, 32, 32, 0, kClear);
     EXPECT_PIXEL_TOL(*img, 56, 32, 0, kClear);
-    expectGolden(*img, "order_skinned_mesh");
+    expectGolden(*img, "order_skinned_mesh", 3, 0.0);
 }
 
 TEST_F(VkTest, MorphingMeshDrawsWeightedTarget) {
@@ -253,7 +253,7 @@ TEST_F(VkTest, MorphingMeshDrawsWeightedTarget) {
     EXPECT_PIXEL(*img, 32, 48, Rgba{128, 128, 0, 255});  // 0.5 red + 0.5 green at x -0.25..0.25
     EXPECT_PIXEL_TOL(*img, 12, 48, 0, kClear);
     EXPECT_PIXEL_TOL(*img, 52, 48, 0, kClear);
-    expectGolden(*img, "order_morphing_mesh");
+    expectGolden(*img, "order_morphing_mesh", 3, 0.0);
 }
 
 TEST_F(VkTest, Graphics3DRenderExceptions) {

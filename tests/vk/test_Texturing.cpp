@@ -150,7 +150,7 @@ TEST_F(VkTest, TextureEnvTableAllFunctionsAndFormats) {
             const Rgba want = defined[row][col] ? asRgba(expected[row][col]) : Rgba{0, 0, 0, 0};
             EXPECT_PIXEL(*img, 8 + 12 * col, 8 + 12 * row, want);
         }
-    expectGolden(*img, "texture_env_table");
+    expectGolden(*img, "texture_env_table", 3, 0.0);
 }
 
 TEST_F(VkTest, TextureTwoUnits) {
@@ -174,7 +174,7 @@ TEST_F(VkTest, TextureTwoUnits) {
     EXPECT_PIXEL(*img, 16, 32,
                  Rgba{level(c8(0x66) * 1 + l), level(c8(0x99) * c8(0x80) + l), level(c8(0xCC) * c8(0x20) + l), 0x80});
     EXPECT_PIXEL(*img, 48, 32, Rgba{level(c8(0x66) + l), level(c8(0x99) + l), level(c8(0xCC) + l), 0x80});
-    expectGolden(*img, "texture_two_units");
+    expectGolden(*img, "texture_two_units", 3, 0.0);
 }
 
 TEST_F(VkTest, TextureTransformTranslateAndScale) {
@@ -218,7 +218,40 @@ TEST_F(VkTest, TextureTransformTranslateAndScale) {
     EXPECT_PIXEL(*img, 56, 40, kWhite);
     EXPECT_PIXEL(*img, 40, 56, kRed);
     EXPECT_PIXEL(*img, 56, 56, kGreen);
-    expectGolden(*img, "texture_transform");
+    expectGolden(*img, "texture_transform", 3, 0.0);
+}
+
+TEST_F(VkTest, TextureUnitReadsItsOwnCoordinatesAndTransform) {
+    // Only unit 1 is textured (four colours, REPLACE). Its coordinate set is
+    // biased by s + 0.5 and its Texture2D translated by t + 0.5, while unit
+    // 0's coordinates stay unbiased: the image appears shifted by half in
+    // both directions (white top-left). Right: the same without the shifts.
+    auto img = target(64, 64);
+    Ref<Camera> cam(new Camera());
+    Graphics3D* g = begin(img.get(), cam.get());
+    g->clear(nullptr);
+    Ref<Image2D> colours = fourColours();
+    Ref<Texture2D> shifted(new Texture2D(colours.get()));
+    shifted->setBlending(Texture2D::FUNC_REPLACE);
+    shifted->setTranslation(0, 0.5f, 0);
+    Quad left = makeQuad(-1, -0.5f, 0, 0.5f);
+    const float bias[2] = {0.5f, 0.0f};
+    left.vb->setTexCoords(1, left.vb->getTexCoords(1).get(), 1.0f, bias);
+    g->render(left.vb.get(), left.ib.get(), textured(nullptr, shifted.get()).get(), nullptr);
+    Ref<Texture2D> plain(new Texture2D(colours.get()));
+    plain->setBlending(Texture2D::FUNC_REPLACE);
+    Quad right = makeQuad(0, -0.5f, 1, 0.5f);
+    g->render(right.vb.get(), right.ib.get(), textured(nullptr, plain.get()).get(), nullptr);
+    g->releaseTarget();
+    EXPECT_PIXEL(*img, 8, 24, kWhite);
+    EXPECT_PIXEL(*img, 24, 24, kBlue);
+    EXPECT_PIXEL(*img, 8, 40, kGreen);
+    EXPECT_PIXEL(*img, 24, 40, kRed);
+    EXPECT_PIXEL(*img, 40, 24, kRed);
+    EXPECT_PIXEL(*img, 56, 24, kGreen);
+    EXPECT_PIXEL(*img, 40, 40, kBlue);
+    EXPECT_PIXEL(*img, 56, 40, kWhite);
+    expectGolden(*img, "texture_unit1_coordinates", 3, 0.0);
 }
 
 namespace {
@@ -269,7 +302,7 @@ TEST_F(VkTest, TextureWrapAndImageFilter) {
             EXPECT_PIXEL(*img, x, 16 * band + 8, Rgba{v, v, v, 255});
         }
     }
-    expectGolden(*img, "texture_wrap_filter");
+    expectGolden(*img, "texture_wrap_filter", 3, 0.002);
 }
 
 TEST_F(VkTest, TextureMipmapOnlyWhenLevelFilterAsksForIt) {
@@ -305,5 +338,5 @@ TEST_F(VkTest, TextureMipmapOnlyWhenLevelFilterAsksForIt) {
             EXPECT_PIXEL(*img, 48 + dx, y, Rgba{128, 128, 128, 255});
         }
     }
-    expectGolden(*img, "texture_mipmap");
+    expectGolden(*img, "texture_mipmap", 3, 0.0);
 }
