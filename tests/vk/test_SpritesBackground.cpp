@@ -343,3 +343,21 @@ TEST_F(VkTest, SpriteScaledUnderPerspective) {
     EXPECT_PIXEL_TOL(*img, 20, 16, 0, kClear);
     expectGolden(*img, "sprite_perspective", 3, 0.002);
 }
+
+TEST_F(VkTest, BackgroundRgbImageOnRgbTarget) {
+    // The format rule in the other direction: an RGB image clears an RGB
+    // target (the quadrant image without alpha, crop = whole image).
+    Ref<Image2D> rgbTarget(new Image2D(Image2D::RGB, 32, 32));
+    Ref<Background> bg(new Background());
+    bg->setImage(m3gtest::image(Image2D::RGB, 2, 2, {255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255}).get());
+    Graphics3D* g = Graphics3D::getInstance();
+    g->bindTarget(rgbTarget.get());
+    g->clear(bg.get());
+    g->releaseTarget();
+    EXPECT_PIXEL_TOL(*rgbTarget, 0, 0, 0, kRed);
+    EXPECT_PIXEL_TOL(*rgbTarget, 31, 0, 0, kGreen);
+    EXPECT_PIXEL_TOL(*rgbTarget, 0, 31, 0, kBlue);
+    EXPECT_PIXEL_TOL(*rgbTarget, 31, 31, 0, kWhite);
+    EXPECT_PIXEL_TOL(*rgbTarget, 15, 16, 0, kBlue);
+    expectGolden(*rgbTarget, "background_rgb_target", 3, 0.0);
+}
