@@ -27,6 +27,9 @@
 #include <m3g/VertexArray.h>
 #include <m3g/VertexBuffer.h>
 
+#include <m3g/MorphingMesh.h>
+#include <m3g/SkinnedMesh.h>
+
 #include "Check.h"
 #include "MathUtil.h"
 #include "MeshDeformer.h"
@@ -184,7 +187,9 @@ void Picker::intersectMesh(Mesh& mesh, const glm::mat4& toGroup) {
 
     // Positions in mesh space: deformed, or the VertexArray with scale and bias.
     try {
-        deformed_ = deformer_.update(mesh);
+        // update() reports a change, not whether the mesh deforms.
+        deformer_.update(mesh);
+        deformed_ = dynamic_cast<const SkinnedMesh*>(&mesh) != nullptr || dynamic_cast<const MorphingMesh*>(&mesh) != nullptr;
     } catch (const IllegalStateException& e) {
         throw IllegalStateException(detail::str(kWhere, ": ", e.what()));
     } catch (const ArithmeticException& e) {
