@@ -29,12 +29,6 @@ bool backgroundMatches(const Graphics3D& g, const Background* background) {
     return !image || image->getFormat() == targetFormat(g);
 }
 
-void collectWorldLights(const Node& node, const Transform& toWorld, std::vector<Graphics3D::LightEntry>& out) {
-    if (!node.isRenderingEnabled()) return;
-    if (auto* light = dynamic_cast<const Light*>(&node)) out.push_back({const_cast<Light*>(light), toWorld});
-    detail::forEachChild(node, [&](Node& child) { collectWorldLights(child, toWorld * child.compositeTransform(), out); });
-}
-
 }  // namespace
 
 detail::RenderBackend& Graphics3D::backend() {
@@ -78,13 +72,15 @@ void Graphics3D::render(World* world) {
 
     // The World's lights replace Graphics3D's (spec §4.26).
     std::vector<LightEntry> found;
-    collectWorldLights(*world, Transform(), found);
+    detail::collectLights(*world, Transform(), found);
     lights_ = std::move(found);
 
     detail::RenderQueue& q = *queue_;
     q.reset(*camera, getLimits().maxLights);
     for (const LightEntry& l : lights_) q.addLight(*l.light, worldToCamera_ * l.toWorld);
-    q.collectNode(*world, worldToCamera_ * world->compositeTransform());
+    // Positions relative to the World, as the camera's getTransformTo(world): the
+    // World's own transformation cancels out.
+    q.collectNode(*world, worldToCamera_);
     q.sort();
     backend().clear(*this, background);
     backend().render(*this, q);

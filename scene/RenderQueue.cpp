@@ -66,10 +66,10 @@ void RenderQueue::addLight(const Light& light, const Transform& lightToEye) {
     lights.push_back(l);
 }
 
-void RenderQueue::collectLights(const Node& root, const Transform& rootToEye) {
+void collectLights(const Node& root, const Transform& rootToWorld, std::vector<Graphics3D::LightEntry>& out) {
     if (!root.isRenderingEnabled()) return;
-    if (const auto* light = dynamic_cast<const Light*>(&root)) addLight(*light, rootToEye);
-    forEachChild(root, [&](Node& child) { collectLights(child, rootToEye * child.compositeTransform()); });
+    if (const auto* light = dynamic_cast<const Light*>(&root)) out.push_back({const_cast<Light*>(light), rootToWorld});
+    forEachChild(root, [&](Node& child) { collectLights(child, rootToWorld * child.compositeTransform(), out); });
 }
 
 void RenderQueue::collectNode(const Node& node, const Transform& nodeToEye, float alphaFactor) {

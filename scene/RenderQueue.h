@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include <m3g/Graphics3D.h>
 #include <m3g/Transform.h>
 
 namespace m3g {
@@ -39,6 +40,11 @@ struct RenderLight {
     int scope = -1;
 };
 
+/// Appends every Light under `root` whose path from `root` is
+/// rendering-enabled, with its light-to-world transform (`rootToWorld`
+/// includes root's own transform). Spec §5.3: render(World)'s lights.
+void collectLights(const Node& root, const Transform& rootToWorld, std::vector<Graphics3D::LightEntry>& out);
+
 struct RenderItem {
     enum class Kind : std::uint8_t { Submesh, Sprite };
     Kind kind = Kind::Submesh;
@@ -64,9 +70,6 @@ struct RenderQueue {
     void reset(const Camera& camera, int maxLightsPerDraw);
     /// Adds a light given its light -> eye transform.
     void addLight(const Light& light, const Transform& lightToEye);
-    /// Adds every rendering-enabled Light under `root` (root's own
-    /// transform included in rootToEye). Spec §5.3.
-    void collectLights(const Node& root, const Transform& rootToEye);
     /// Adds the draws of `node` and its descendants; `nodeToEye` already
     /// includes node's own transform (or not, for render(Node, Transform)).
     /// Honours rendering enable, scope against the camera, alpha factors.
