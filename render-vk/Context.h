@@ -17,6 +17,14 @@
 
 namespace m3g::vk {
 
+/// Records one image layout transition (mip levels [level, level + count)).
+void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, std::uint32_t level,
+                  std::uint32_t count, VkImageLayout from, VkImageLayout to, VkPipelineStageFlags2 srcStage,
+                  VkAccessFlags2 srcAccess, VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess);
+/// Records a copy of `width` x `height` RGBA texels from `buffer` into mip
+/// level 0 of `image` (in TRANSFER_DST_OPTIMAL layout).
+void copyBufferToImage(VkCommandBuffer cmd, VkBuffer buffer, VkImage image, std::uint32_t width, std::uint32_t height);
+
 /// Throws VulkanError naming `what` when `result` is not VK_SUCCESS.
 void check(VkResult result, const char* what);
 const char* resultName(VkResult result);

@@ -88,20 +88,7 @@ std::int32_t texFunc(int blending) {
 void barrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
              VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess, VkPipelineStageFlags2 dstStage,
              VkAccessFlags2 dstAccess) {
-    VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-    b.srcStageMask = srcStage;
-    b.srcAccessMask = srcAccess;
-    b.dstStageMask = dstStage;
-    b.dstAccessMask = dstAccess;
-    b.oldLayout = from;
-    b.newLayout = to;
-    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.image = image;
-    b.subresourceRange = {aspect, 0, 1, 0, 1};
-    VkDependencyInfo d{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    d.imageMemoryBarrierCount = 1;
-    d.pImageMemoryBarriers = &b;
-    vkCmdPipelineBarrier2(cmd, &d);
+    imageBarrier(cmd, image, aspect, 0, 1, from, to, srcStage, srcAccess, dstStage, dstAccess);
 }
 
 }  // namespace
@@ -220,44 +207,32 @@ void Renderer::begin(Graphics3D& g3d) {
     VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     check(vkBeginCommandBuffer(cmd_, &bi), "vkBeginCommandBuffer");
-    if (msaa) {
-        // Prior contents go to initial_, drawn into the multisampled image below.
-        if (!overwrite) {
-            barrier(cmd_, initial_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                    VK_ACCESS_2_TRANSFER_WRITE_BIT);
-            VkBufferImageCopy copy{};
-            copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-            copy.imageExtent = {w, h, 1};
-            vkCmdCopyBufferToImage(cmd_, transfer_.buffer, initial_.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
-            barrier(cmd_, initial_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+    constexpr VkPipelineStageFlags2 kAttachmentStage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
+    constexpr VkAccessFlags2 kAttachmentAccess =
+        VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT;
+    // The prior contents: straight into the colour attachment, or with
+    // multisampling into initial_, drawn into the samples below.
+    if (!overwrite) {
+        VkImage dst = msaa ? initial_.image : color_.image;
+        barrier(cmd_, dst, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        copyBufferToImage(cmd_, transfer_.buffer, dst, w, h);
+        if (msaa)
+            barrier(cmd_, dst, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
                     VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-        }
-        for (VkImage image : {color_.image, msaaColor_.image})
-            barrier(cmd_, image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
-                    VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                    VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-    } else if (!overwrite) {
-        barrier(cmd_, color_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                VK_ACCESS_2_TRANSFER_WRITE_BIT);
-        VkBufferImageCopy copy{};
-        copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        copy.imageExtent = {w, h, 1};
-        vkCmdCopyBufferToImage(cmd_, transfer_.buffer, color_.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
-        barrier(cmd_, color_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-    } else {
-        barrier(cmd_, color_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
-                VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+        else
+            barrier(cmd_, dst, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                    VK_ACCESS_2_TRANSFER_WRITE_BIT, kAttachmentStage, kAttachmentAccess);
     }
+    // Attachments that start with undefined contents.
+    for (VkImage image : {msaa || overwrite ? color_.image : VK_NULL_HANDLE, msaa ? msaaColor_.image : VK_NULL_HANDLE})
+        if (image)
+            barrier(cmd_, image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0, kAttachmentStage,
+                    kAttachmentAccess);
     barrier(cmd_, depth_.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
             VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
             VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
@@ -297,18 +272,12 @@ void Renderer::begin(Graphics3D& g3d) {
         prior.image = initial_;
         VkSampler sampler = resources_->sampler(Texture2D::WRAP_CLAMP, Texture2D::WRAP_CLAMP, Texture2D::FILTER_NEAREST,
                                                 Texture2D::FILTER_BASE_LEVEL);
-        VkDescriptorSet textures = resources_->textureSet(&prior, sampler, nullptr, VK_NULL_HANDLE);
-        VkDescriptorSet set;
+        VkDescriptorSet set, textures;
         std::uint32_t offset;
-        DrawUniforms& u = allocUniforms(set, offset);
-        u.texEnv[0][0] = TEX_REPLACE;
-        u.texEnv[0][1] = u.texEnv[0][2] = 1;
-        u.defaultColor[0] = u.defaultColor[1] = u.defaultColor[2] = u.defaultColor[3] = 1.0f;
-        u.misc[0] = 1.0f;
-        u.misc[2] = -1.0f;
+        quadUniforms(prior, sampler, TEX_REPLACE, set, offset, textures);
         const float ndc[4] = {-1.0f, -1.0f, 1.0f, 1.0f};
         const float tex[4] = {0.0f, 0.0f, 1.0f, 1.0f};
-        drawQuad(u, set, offset, textures, PipelineKey{0, 0xF, static_cast<std::uint8_t>(samples_)}, false, false, ndc, 0.0f,
+        drawQuad(set, offset, textures, PipelineKey{0, 0xF, static_cast<std::uint8_t>(samples_)}, false, false, ndc, 0.0f,
                  tex);
     }
 }
@@ -443,27 +412,43 @@ void Renderer::clear(Graphics3D& g3d, const Background* background) {
     VkSampler sampler = resources_->sampler(repeatX ? Texture2D::WRAP_REPEAT : Texture2D::WRAP_CLAMP,
                                             repeatY ? Texture2D::WRAP_REPEAT : Texture2D::WRAP_CLAMP,
                                             Texture2D::FILTER_NEAREST, Texture2D::FILTER_BASE_LEVEL);
-    VkDescriptorSet textures = resources_->textureSet(&tex, sampler, nullptr, VK_NULL_HANDLE);
-    VkDescriptorSet set;
+    VkDescriptorSet set, textures;
     std::uint32_t offset;
-    DrawUniforms& u = allocUniforms(set, offset);
+    DrawUniforms& u = quadUniforms(tex, sampler, TEX_REPLACE, set, offset, textures);
     const float iw = static_cast<float>(image->getWidth()), ih = static_cast<float>(image->getHeight());
     const float texRect[4] = {static_cast<float>(background->getCropX()) / iw, static_cast<float>(background->getCropY()) / ih,
                               static_cast<float>(background->getCropX() + background->getCropWidth()) / iw,
                               static_cast<float>(background->getCropY() + background->getCropHeight()) / ih};
-    u.texEnv[0][0] = TEX_REPLACE;
-    u.texEnv[0][1] = tex.hasColor;
-    u.texEnv[0][2] = tex.hasAlpha;
     u.texEnv[0][3] = (repeatX ? 0 : 1) | (repeatY ? 0 : 2);
-    u.defaultColor[0] = u.defaultColor[1] = u.defaultColor[2] = u.defaultColor[3] = 1.0f;
-    u.misc[0] = 1.0f;   // alpha factor
-    u.misc[2] = -1.0f;  // no fixed fog depth
     const float ndc[4] = {-1.0f, -1.0f, 1.0f, 1.0f};
-    drawQuad(u, set, offset, textures, PipelineKey{0, 0xF, static_cast<std::uint8_t>(samples_)}, false, false, ndc, 0.0f,
+    drawQuad(set, offset, textures, PipelineKey{0, 0xF, static_cast<std::uint8_t>(samples_)}, false, false, ndc, 0.0f,
              texRect);
 }
 
-void Renderer::drawQuad(DrawUniforms& u, VkDescriptorSet uniformSet, std::uint32_t offset, VkDescriptorSet textures,
+DrawUniforms& Renderer::quadUniforms(const TextureMirror& tex, VkSampler sampler, std::int32_t func,
+                                     VkDescriptorSet& set, std::uint32_t& offset, VkDescriptorSet& textures) {
+    textures = resources_->textureSet(&tex, sampler, nullptr, VK_NULL_HANDLE);
+    DrawUniforms& u = allocUniforms(set, offset);
+    // Positions are NDC: identity model-view, only the clip-space fix-up.
+    static const Transform clipFix = vulkanProjection(Transform());
+    identity(u.modelView);
+    toColumns(clipFix, u.projection);
+    identity(u.normalMatrix);
+    identity(u.texMatrix[0]);
+    identity(u.texMatrix[1]);
+    u.positionScaleBias[3] = 1.0f;
+    u.texScaleBias[0][3] = u.texScaleBias[1][3] = 1.0f;
+    u.flags[0] = F_CLIP_SPACE;
+    u.texEnv[0][0] = func;
+    u.texEnv[0][1] = tex.hasColor;
+    u.texEnv[0][2] = tex.hasAlpha;
+    u.defaultColor[0] = u.defaultColor[1] = u.defaultColor[2] = u.defaultColor[3] = 1.0f;
+    u.misc[0] = 1.0f;   // alpha factor
+    u.misc[2] = -1.0f;  // no fixed fog depth
+    return u;
+}
+
+void Renderer::drawQuad(VkDescriptorSet uniformSet, std::uint32_t offset, VkDescriptorSet textures,
                         const PipelineKey& key, bool depthTest, bool depthWrite, const float r[4], float z,
                         const float t[4]) {
     if (quadOffset_ + kQuadBytes > quads_.size) {
@@ -472,14 +457,6 @@ void Renderer::drawQuad(DrawUniforms& u, VkDescriptorSet uniformSet, std::uint32
         quads_ = ctx_->createHostBuffer(quads_.size * 2, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
         quadOffset_ = 0;
     }
-    identity(u.modelView);
-    toColumns(vulkanProjection(Transform()), u.projection);
-    identity(u.normalMatrix);
-    identity(u.texMatrix[0]);
-    identity(u.texMatrix[1]);
-    u.positionScaleBias[3] = 1.0f;
-    u.texScaleBias[0][3] = u.texScaleBias[1][3] = 1.0f;
-    u.flags[0] |= F_CLIP_SPACE;
     // Two triangles, counter-clockwise; positions then texcoords per vertex.
     const float v[6][6] = {
         {r[0], r[1], z, t[0], t[3], 0}, {r[2], r[1], z, t[2], t[3], 0}, {r[2], r[3], z, t[2], t[1], 0},
@@ -514,6 +491,7 @@ void Renderer::render(Graphics3D& g3d, const detail::RenderQueue& queue) {
     begin(g3d);
     applyViewport(g3d);
     if (scissorEmpty_) return;
+    toColumns(vulkanProjection(queue.projection), projection_);  // once per queue, not per draw
     for (const detail::RenderItem& item : queue.items) {
         if (item.kind == detail::RenderItem::Kind::Sprite) drawSprite(queue, item);
         else drawSubmesh(queue, item);
@@ -536,7 +514,7 @@ void Renderer::drawSubmesh(const detail::RenderQueue& queue, const detail::Rende
     std::uint32_t offset;
     DrawUniforms& u = allocUniforms(set, offset);
     toColumns(item.modelView, u.modelView);
-    toColumns(vulkanProjection(queue.projection), u.projection);
+    std::memcpy(u.projection, projection_, sizeof(projection_));
     {
         glm::mat3 mv;
         for (int r = 0; r < 3; ++r)
@@ -676,14 +654,9 @@ void Renderer::drawSprite(const detail::RenderQueue& queue, const detail::Render
     const TextureMirror& tex = resources_->texture(*image, false);
     VkSampler sampler = resources_->sampler(Texture2D::WRAP_CLAMP, Texture2D::WRAP_CLAMP, Texture2D::FILTER_NEAREST,
                                             Texture2D::FILTER_BASE_LEVEL);
-    VkDescriptorSet textures = resources_->textureSet(&tex, sampler, nullptr, VK_NULL_HANDLE);
-    VkDescriptorSet set;
+    VkDescriptorSet set, textures;
     std::uint32_t offset;
-    DrawUniforms& u = allocUniforms(set, offset);
-    u.texEnv[0][0] = TEX_MODULATE;
-    u.texEnv[0][1] = tex.hasColor;
-    u.texEnv[0][2] = tex.hasAlpha;
-    u.defaultColor[0] = u.defaultColor[1] = u.defaultColor[2] = u.defaultColor[3] = 1.0f;
+    DrawUniforms& u = quadUniforms(tex, sampler, TEX_MODULATE, set, offset, textures);
     const Appearance* app = item.appearance;
     const CompositingMode* cm = app->getCompositingMode().get();
     fillFog(u, app);
@@ -696,7 +669,7 @@ void Renderer::drawSprite(const detail::RenderQueue& queue, const detail::Render
     key.samples = static_cast<std::uint8_t>(samples_);
     const float ndc[4] = {r.x0, r.y0, r.x1, r.y1};
     const float texRect[4] = {r.s0, r.t0, r.s1, r.t1};
-    drawQuad(u, set, offset, textures, key, !cm || cm->isDepthTestEnabled(), !cm || cm->isDepthWriteEnabled(), ndc,
+    drawQuad(set, offset, textures, key, !cm || cm->isDepthTestEnabled(), !cm || cm->isDepthWriteEnabled(), ndc,
              r.ndcZ, texRect);
 }
 

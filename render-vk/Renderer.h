@@ -48,9 +48,14 @@ private:
     DrawUniforms& allocUniforms(VkDescriptorSet& set, std::uint32_t& offset);
     void drawSubmesh(const detail::RenderQueue& queue, const detail::RenderItem& item);
     void drawSprite(const detail::RenderQueue& queue, const detail::RenderItem& item);
+    /// Uniforms of a screen-space textured quad (sprite, background image,
+    /// prior contents): clip-space positions, unit 0 = `tex` with `func`,
+    /// white vertex colour, alpha factor 1; also the texture descriptor set.
+    DrawUniforms& quadUniforms(const TextureMirror& tex, VkSampler sampler, std::int32_t func, VkDescriptorSet& set,
+                               std::uint32_t& offset, VkDescriptorSet& textures);
     /// A textured rectangle in NDC: corners (x0,y0)-(x1,y1), texture coordinates
     /// (s0,t0) at (x0,y1) (top-left) and (s1,t1) at (x1,y0).
-    void drawQuad(DrawUniforms& u, VkDescriptorSet uniformSet, std::uint32_t offset, VkDescriptorSet textures,
+    void drawQuad(VkDescriptorSet uniformSet, std::uint32_t offset, VkDescriptorSet textures,
                   const PipelineKey& key, bool depthTest, bool depthWrite, const float rect[4], float z,
                   const float tex[4]);
     void bindPipeline(const PipelineKey& key);
@@ -74,6 +79,7 @@ private:
     Rect viewport_, scissor_;
     bool scissorEmpty_ = false;
     float depthNear_ = 0.0f, depthFar_ = 1.0f;
+    float projection_[16] = {};  // the queue's projection with the Vulkan fix-up, column major
 
     // Per-frame streaming data.
     std::vector<UniformChunk> chunks_;

@@ -1,5 +1,7 @@
 #include "ResourceCache.h"
 
+#include "PropertyUtil.h"
+
 #include <algorithm>
 #include <cstring>
 
@@ -27,13 +29,12 @@ void rawStream(const VertexArray* a, int outComponents, std::vector<float>& out)
         for (int k = 0; k < std::min(c, outComponents); ++k) out[v * outComponents + k] = static_cast<float>(a->value(v, k));
 }
 
-// OpenGL's signed-integer normal mapping (2c + 1) / (2^bits - 1).
+// OpenGL's signed-integer normal mapping (detail::normalComponent).
 void normalStream(const VertexArray* a, std::vector<float>& out) {
-    const float range = a->getComponentType() == 1 ? 255.0f : 65535.0f;
-    const int n = a->getVertexCount();
+    const int n = a->getVertexCount(), size = a->getComponentType();
     out.resize(static_cast<std::size_t>(n) * 3);
     for (int v = 0; v < n; ++v)
-        for (int k = 0; k < 3; ++k) out[v * 3 + k] = (2.0f * static_cast<float>(a->value(v, k)) + 1.0f) / range;
+        for (int k = 0; k < 3; ++k) out[v * 3 + k] = detail::normalComponent(a->value(v, k), size);
 }
 
 // Colour bytes are unsigned; 3-component colours get alpha 1.
@@ -238,27 +239,12 @@ TextureMirror ResourceCache::createTexture(Image2D& image, bool mipmaps) {
         auto barrier = [&](std::uint32_t level, std::uint32_t count, VkImageLayout from, VkImageLayout to,
                            VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess, VkPipelineStageFlags2 dstStage,
                            VkAccessFlags2 dstAccess) {
-            VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-            b.srcStageMask = srcStage;
-            b.srcAccessMask = srcAccess;
-            b.dstStageMask = dstStage;
-            b.dstAccessMask = dstAccess;
-            b.oldLayout = from;
-            b.newLayout = to;
-            b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-            b.image = img;
-            b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, level, count, 0, 1};
-            VkDependencyInfo d{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-            d.imageMemoryBarrierCount = 1;
-            d.pImageMemoryBarriers = &b;
-            vkCmdPipelineBarrier2(cmd, &d);
+            imageBarrier(cmd, img, VK_IMAGE_ASPECT_COLOR_BIT, level, count, from, to, srcStage, srcAccess, dstStage,
+                         dstAccess);
         };
         barrier(0, levels, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
                 VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-        VkBufferImageCopy copy{};
-        copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        copy.imageExtent = {w, h, 1};
-        vkCmdCopyBufferToImage(cmd, staging.buffer, img, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+        copyBufferToImage(cmd, staging.buffer, img, w, h);
         // The mip chain by successive linear blits (box filter), as glGenerateMipmap.
         for (std::uint32_t level = 1; level < levels; ++level) {
             barrier(level - 1, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,

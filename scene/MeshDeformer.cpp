@@ -26,6 +26,7 @@
 #include <m3g/skin/ThreadPool.h>
 
 #include "Check.h"
+#include "PropertyUtil.h"
 
 namespace m3g::detail {
 
@@ -47,9 +48,9 @@ void rawFloats(const VertexArray* array, std::vector<float>& out) {
 void floatNormals(const VertexArray* array, std::vector<float>& out) {
     out.clear();
     if (!array) return;
-    const float range = array->getComponentType() == 1 ? 255.0f : 65535.0f;
     rawFloats(array, out);
-    for (float& c : out) c = (2.0f * c + 1.0f) / range;
+    const int size = array->getComponentType();
+    for (float& c : out) c = normalComponent(static_cast<int>(c), size);
 }
 
 /// Positions with the given scale and bias applied (the base's, for morph

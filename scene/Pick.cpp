@@ -31,6 +31,7 @@
 #include <m3g/SkinnedMesh.h>
 
 #include "Check.h"
+#include "PropertyUtil.h"
 #include "MathUtil.h"
 #include "MeshDeformer.h"
 #include "SpriteProjection.h"
@@ -278,11 +279,10 @@ void Picker::recordMeshHit(Mesh& mesh, int submesh, float t, const int idx[3], f
             for (int c = 0; c < 3; ++c) n[c] += w[k] * def->normals[static_cast<std::size_t>(idx[k]) * 3 + c];
         hit_.normal = n;
     } else if (const VertexArray* normals = vb.normals(); normals && !def) {
-        const float range = normals->getComponentType() == 1 ? 255.0f : 65535.0f;
+        const int size = normals->getComponentType();
         glm::vec3 n(0.0f);
         for (int k = 0; k < 3; ++k)
-            for (int c = 0; c < 3; ++c)
-                n[c] += w[k] * (2.0f * static_cast<float>(normals->value(idx[k], c)) + 1.0f) / range;
+            for (int c = 0; c < 3; ++c) n[c] += w[k] * detail::normalComponent(normals->value(idx[k], c), size);
         hit_.normal = n;
     }
 

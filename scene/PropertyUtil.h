@@ -25,6 +25,12 @@ inline int packRGB(float r, float g, float b) noexcept {
 /// 0xAA000000 from one channel in [0, 1] (clamped).
 inline int packAlpha(float a) noexcept { return static_cast<int>(channelToByte(a) << 24); }
 
+/// A byte or short normal component as OpenGL maps signed integers to
+/// [-1, 1]: (2c + 1) / (2^bits - 1). componentSize is 1 or 2 (VertexArray).
+inline float normalComponent(int value, int componentSize) noexcept {
+    return (2.0f * static_cast<float>(value) + 1.0f) / (componentSize == 1 ? 255.0f : 65535.0f);
+}
+
 /// Rounds to the nearest integer, halves towards +infinity (floor(v + 0.5)),
 /// saturating at the int range; NaN -> 0.
 inline int roundToInt(float v) noexcept {
