@@ -84,6 +84,10 @@ std::string usageText() {
            "            camera at viewport point (X, Y), (0, 0) top left, (1, 1) bottom right\n"
            "  bench render FILE... [--size WxH] [--frames N]\n"
            "            rendering speed: first frame, ms per frame, fps, CPU per draw, pipelines\n"
+           "  view [FILE] [--size WxH] [--time MS] [--camera-index I] [--no-ui] [--lenient]\n"
+           "       [--frames N --screenshot OUT.png] [--script FILE] [--no-vsync] [--no-headlight]\n"
+           "            the desktop viewer (.m3g, .png or a game .jar; needs a display);\n"
+           "            --frames/--screenshot/--script run it unattended (docs/viewer.md)\n"
            "  version   print the library version\n"
            "  help      print this text\n";
 }

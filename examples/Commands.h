@@ -16,5 +16,8 @@ int cmdCompare(std::span<const std::string_view> args);
 int cmdBenchRender(std::span<const std::string_view> args);
 /// m3g sample -o OUT.m3g: writes the project's sample scene.
 int cmdSample(std::span<const std::string_view> args);
+/// m3g view (examples/viewer/); without GLFW and ImGui at build time it
+/// says what to install.
+int cmdView(std::span<const std::string_view> args);
 
 }  // namespace m3gcli

@@ -122,6 +122,7 @@ int main(int argc, char** argv) {
         if (command == "render") return m3gcli::cmdRender(rest);
         if (command == "compare") return m3gcli::cmdCompare(rest);
         if (command == "sample") return m3gcli::cmdSample(rest);
+        if (command == "view") return m3gcli::cmdView(rest);
         if (command == "bench" && !rest.empty() && rest[0] == "render")
             return m3gcli::cmdBenchRender(std::span<const std::string_view>(rest).subspan(1));
         if (command == "bench") return m3gcli::benchCommand(argc - 2, argv + 2);

@@ -337,6 +337,9 @@ Context::Context() {
         VkPhysicalDeviceFeatures2 enable{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
         enable.pNext = &enable13;
         enable.features.samplerAnisotropy = VK_FALSE;
+        // Wireframe debug view only (DebugView::wireframe).
+        enable.features.fillModeNonSolid = f2.features.fillModeNonSolid;
+        wireframe_ = f2.features.fillModeNonSolid == VK_TRUE;
 
         std::vector<const char*> extensions;
         std::uint32_t ne = 0;
@@ -346,8 +349,10 @@ Context::Context() {
         // Swapchains only for windowed applications (requestWindowExtensions).
         if (!gWindowExtensions.empty())
             for (const auto& e : available)
-                if (std::strcmp(e.extensionName, VK_KHR_SWAPCHAIN_EXTENSION_NAME) == 0)
+                if (std::strcmp(e.extensionName, VK_KHR_SWAPCHAIN_EXTENSION_NAME) == 0) {
                     extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+                    swapchain_ = true;
+                }
 
         const float priority = 1.0f;
         VkDeviceQueueCreateInfo qi{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -525,6 +530,25 @@ void Context::submit(VkCommandBuffer cmd, VkFence fence) {
     check(vkQueueSubmit(queue_, 1, &si, fence), "vkQueueSubmit");
 }
 
+void Context::submit(VkCommandBuffer cmd, VkFence fence, VkSemaphore wait, VkPipelineStageFlags waitStage,
+                     VkSemaphore signal) {
+    VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    si.commandBufferCount = 1;
+    si.pCommandBuffers = &cmd;
+    si.waitSemaphoreCount = wait ? 1 : 0;
+    si.pWaitSemaphores = &wait;
+    si.pWaitDstStageMask = &waitStage;
+    si.signalSemaphoreCount = signal ? 1 : 0;
+    si.pSignalSemaphores = &signal;
+    std::lock_guard lock(queueMutex_);
+    check(vkQueueSubmit(queue_, 1, &si, fence), "vkQueueSubmit");
+}
+
+VkResult Context::present(const VkPresentInfoKHR& info) {
+    std::lock_guard lock(queueMutex_);
+    return vkQueuePresentKHR(queue_, &info);
+}
+
 // ---- public functions (Vulkan.h) ----
 
 std::vector<DeviceInfo> listDevices() {
@@ -559,6 +583,17 @@ bool requestWindowExtensions(const std::vector<std::string>& instanceExtensions)
 
 bool validationEnabled() { return Context::exists() && Context::get().validation(); }
 std::uint64_t validationMessageCount() { return gValidationMessages.load(); }
+
+namespace {
+std::atomic<bool> gWireframe{false}, gUnlit{false};
+}
+
+void setDebugView(const DebugView& view) noexcept {
+    gWireframe = view.wireframe;
+    gUnlit = view.unlit;
+}
+
+DebugView debugView() noexcept { return DebugView{gWireframe.load(), gUnlit.load()}; }
 std::string lastValidationMessage() {
     std::lock_guard lock(gMessageMutex);
     return gLastMessage;

@@ -78,6 +78,16 @@ public:
     void submitNow(const std::function<void(VkCommandBuffer)>& record);
     /// Submits `cmd` signalling `fence` (queue access is serialised).
     void submit(VkCommandBuffer cmd, VkFence fence);
+    /// The same, waiting for `wait` at `waitStage` and signalling `signal`
+    /// (a swapchain frame).
+    void submit(VkCommandBuffer cmd, VkFence fence, VkSemaphore wait, VkPipelineStageFlags waitStage,
+                VkSemaphore signal);
+    /// vkQueuePresentKHR under the queue lock; returns its result.
+    VkResult present(const VkPresentInfoKHR& info);
+    /// Whether VK_KHR_swapchain was enabled (requestWindowExtensions).
+    bool swapchainEnabled() const noexcept { return swapchain_; }
+    /// Whether polygon mode LINE can be used (the wireframe debug view).
+    bool wireframeSupported() const noexcept { return wireframe_; }
 
     VkCommandPool commandPool() const noexcept { return pool_; }
     std::mutex& poolMutex() noexcept { return poolMutex_; }
@@ -106,6 +116,8 @@ private:
     VkFormat depthFormat_ = VK_FORMAT_D32_SFLOAT;
     VkSampleCountFlagBits maxSamples_ = VK_SAMPLE_COUNT_1_BIT;
     bool validation_ = false;
+    bool swapchain_ = false;
+    bool wireframe_ = false;
     std::mutex queueMutex_, poolMutex_;
 };
 

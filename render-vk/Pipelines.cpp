@@ -112,7 +112,7 @@ VkPipeline Pipelines::create(const PipelineKey& key) {
     vp.viewportCount = 1;
     vp.scissorCount = 1;
     VkPipelineRasterizationStateCreateInfo rs{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-    rs.polygonMode = VK_POLYGON_MODE_FILL;
+    rs.polygonMode = key.wireframe && ctx_.wireframeSupported() ? VK_POLYGON_MODE_LINE : VK_POLYGON_MODE_FILL;
     rs.lineWidth = 1.0f;
     VkPipelineMultisampleStateCreateInfo ms{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
     ms.rasterizationSamples = static_cast<VkSampleCountFlagBits>(key.samples);

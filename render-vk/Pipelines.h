@@ -14,7 +14,10 @@ struct PipelineKey {
     std::uint8_t blend = 0;      ///< 0 REPLACE, 1 ALPHA, 2 ALPHA_ADD, 3 MODULATE, 4 MODULATE_X2
     std::uint8_t writeMask = 0xF;  ///< VkColorComponentFlags
     std::uint8_t samples = 1;
-    std::uint32_t packed() const noexcept { return blend | (writeMask << 4) | (samples << 8); }
+    std::uint8_t wireframe = 0;  ///< 1: polygon mode LINE (DebugView)
+    std::uint32_t packed() const noexcept {
+        return blend | (writeMask << 4) | (samples << 8) | (static_cast<std::uint32_t>(wireframe) << 16);
+    }
 };
 
 class Pipelines {

@@ -22,9 +22,12 @@
 #include <m3g/Sprite3D.h>
 #include <m3g/Texture2D.h>
 #include <m3g/VertexBuffer.h>
+#include <m3g/vk/WindowOverlay.h>
+#include <m3g/vk/WindowTarget.h>
 
 #include "RenderQueue.h"
 #include "SpriteProjection.h"
+#include "Swapchain.h"
 
 namespace m3g::vk {
 
@@ -167,8 +170,9 @@ void Renderer::ensureTargetImages(std::uint32_t width, std::uint32_t height, VkS
     height_ = height;
 }
 
-void Renderer::begin(Graphics3D& g3d) {
+void Renderer::begin(Graphics3D& g3d, bool coveredByClear) {
     if (recording_) return;
+    debug_ = debugView();
     const auto w = static_cast<std::uint32_t>(g3d.targetWidth()), h = static_cast<std::uint32_t>(g3d.targetHeight());
     // ANTIALIAS: multisampling when the device has it (spec §4.26 hints).
     const bool antialias = (g3d.getHints() & Graphics3D::ANTIALIAS) != 0 && ctx_->maxSamples() != VK_SAMPLE_COUNT_1_BIT;
@@ -177,8 +181,21 @@ void Renderer::begin(Graphics3D& g3d) {
     const bool overwrite = (g3d.getHints() & Graphics3D::OVERWRITE) != 0;
     const bool msaa = samples_ != VK_SAMPLE_COUNT_1_BIT;
 
-    // The target's current pixels are the starting contents (unless OVERWRITE).
-    if (!overwrite) {
+    // Where the prior contents come from: a window keeps them on the GPU
+    // (black when its image is new); other targets upload their pixels.
+    window_ = dynamic_cast<WindowTarget*>(g3d.targetGraphics());
+    target_ = &color_;
+    // A first command that clears every pixel makes the prior contents moot.
+    enum class Prior { None, Upload, Keep, Black } prior =
+        overwrite || coveredByClear ? Prior::None : Prior::Upload;
+    if (window_) {
+        bool created = false;
+        target_ = &window_->swapchain().back(w, h, created);
+        if (created) window_->setFreshContents(true);
+        if (prior != Prior::None) prior = window_->freshContents() ? Prior::Black : Prior::Keep;
+        window_->setFreshContents(false);
+    }
+    if (prior == Prior::Upload) {
         auto* dst = static_cast<std::uint8_t*>(transfer_.mapped);
         if (Image2D* image = g3d.targetImage()) {
             std::vector<std::uint8_t> rgba;
@@ -210,42 +227,65 @@ void Renderer::begin(Graphics3D& g3d) {
     constexpr VkPipelineStageFlags2 kAttachmentStage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
     constexpr VkAccessFlags2 kAttachmentAccess =
         VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT;
+    const VkImage colorImage = target_->image;
     // The prior contents: straight into the colour attachment, or with
-    // multisampling into initial_, drawn into the samples below.
-    if (!overwrite) {
-        VkImage dst = msaa ? initial_.image : color_.image;
+    // multisampling into initial_, drawn into the samples below. A window's
+    // image was left in TRANSFER_SRC layout by the previous present.
+    bool colorReady = false;  // colorImage already in attachment layout
+    if (prior == Prior::Upload || (prior == Prior::Keep && msaa)) {
+        VkImage dst = msaa ? initial_.image : colorImage;
         barrier(cmd_, dst, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                 VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-        copyBufferToImage(cmd_, transfer_.buffer, dst, w, h);
+        if (prior == Prior::Upload) {
+            copyBufferToImage(cmd_, transfer_.buffer, dst, w, h);
+        } else {
+            VkImageCopy region{};
+            region.srcSubresource = region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+            region.extent = {w, h, 1};
+            vkCmdCopyImage(cmd_, colorImage, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, dst,
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        }
         if (msaa)
             barrier(cmd_, dst, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
                     VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-        else
+        else {
             barrier(cmd_, dst, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                     VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
                     VK_ACCESS_2_TRANSFER_WRITE_BIT, kAttachmentStage, kAttachmentAccess);
+            colorReady = true;
+        }
     }
-    // Attachments that start with undefined contents.
-    for (VkImage image : {msaa || overwrite ? color_.image : VK_NULL_HANDLE, msaa ? msaaColor_.image : VK_NULL_HANDLE})
-        if (image)
-            barrier(cmd_, image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0, kAttachmentStage,
-                    kAttachmentAccess);
+    if (!colorReady) {
+        // Kept contents change layout in place; anything else starts undefined.
+        const bool keep = prior == Prior::Keep && !msaa;
+        barrier(cmd_, colorImage, VK_IMAGE_ASPECT_COLOR_BIT,
+                keep ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED,
+                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                window_ ? VK_PIPELINE_STAGE_2_TRANSFER_BIT : VK_PIPELINE_STAGE_2_NONE, 0, kAttachmentStage,
+                kAttachmentAccess);
+    }
+    if (msaa)
+        barrier(cmd_, msaaColor_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0, kAttachmentStage,
+                kAttachmentAccess);
     barrier(cmd_, depth_.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
             VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
             VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
             VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
 
     VkRenderingAttachmentInfo colorAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    colorAttachment.imageView = msaa ? msaaColor_.view : color_.view;
+    colorAttachment.imageView = msaa ? msaaColor_.view : target_->view;
     colorAttachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    colorAttachment.loadOp = (overwrite || msaa) ? VK_ATTACHMENT_LOAD_OP_DONT_CARE : VK_ATTACHMENT_LOAD_OP_LOAD;
+    colorAttachment.loadOp = prior == Prior::Black                      ? VK_ATTACHMENT_LOAD_OP_CLEAR
+                             : (prior == Prior::None || msaa)           ? VK_ATTACHMENT_LOAD_OP_DONT_CARE
+                                                                        : VK_ATTACHMENT_LOAD_OP_LOAD;
+    colorAttachment.clearValue.color = {{0.0f, 0.0f, 0.0f, 1.0f}};  // a new Graphics is opaque black
     colorAttachment.storeOp = msaa ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE;
     if (msaa) {
         colorAttachment.resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
-        colorAttachment.resolveImageView = color_.view;
+        colorAttachment.resolveImageView = target_->view;
         colorAttachment.resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     }
     VkRenderingAttachmentInfo depthAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
@@ -262,19 +302,19 @@ void Renderer::begin(Graphics3D& g3d) {
     ri.pDepthAttachment = &depthAttachment;
     vkCmdBeginRendering(cmd_, &ri);
     recording_ = true;
-    if (msaa && !overwrite) {
+    if (msaa && (prior == Prior::Upload || prior == Prior::Keep)) {
         // The prior contents, drawn over the whole target into every sample.
         const VkViewport vp{0, 0, static_cast<float>(w), static_cast<float>(h), 0.0f, 1.0f};
         vkCmdSetViewport(cmd_, 0, 1, &vp);
         const VkRect2D sc{{0, 0}, {w, h}};
         vkCmdSetScissor(cmd_, 0, 1, &sc);
-        TextureMirror prior;
-        prior.image = initial_;
+        TextureMirror priorTexture;
+        priorTexture.image = initial_;
         VkSampler sampler = resources_->sampler(Texture2D::WRAP_CLAMP, Texture2D::WRAP_CLAMP, Texture2D::FILTER_NEAREST,
                                                 Texture2D::FILTER_BASE_LEVEL);
         VkDescriptorSet set, textures;
         std::uint32_t offset;
-        quadUniforms(prior, sampler, TEX_REPLACE, set, offset, textures);
+        quadUniforms(priorTexture, sampler, TEX_REPLACE, set, offset, textures);
         const float ndc[4] = {-1.0f, -1.0f, 1.0f, 1.0f};
         const float tex[4] = {0.0f, 0.0f, 1.0f, 1.0f};
         drawQuad(set, offset, textures, PipelineKey{0, 0xF, static_cast<std::uint8_t>(samples_)}, false, false, ndc, 0.0f,
@@ -282,21 +322,26 @@ void Renderer::begin(Graphics3D& g3d) {
     }
 }
 
-void Renderer::applyViewport(Graphics3D& g3d) {
+Renderer::Rect Renderer::drawArea(const Graphics3D& g3d, Rect& viewport) {
+    const int width = g3d.targetWidth(), height = g3d.targetHeight();
     int ox = 0, oy = 0;
-    Rect clip{0, 0, static_cast<int>(width_), static_cast<int>(height_)};
+    Rect clip{0, 0, width, height};
     if (Graphics* g = g3d.targetGraphics()) {
         ox = g->getTranslateX();
         oy = g->getTranslateY();
         clip = {g->getClipX() + ox, g->getClipY() + oy, g->getClipWidth(), g->getClipHeight()};
     }
-    viewport_ = {g3d.getViewportX() + ox, g3d.getViewportY() + oy, g3d.getViewportWidth(), g3d.getViewportHeight()};
-    const int x0 = std::max({viewport_.x, clip.x, 0});
-    const int y0 = std::max({viewport_.y, clip.y, 0});
-    const int x1 = std::min({viewport_.x + viewport_.w, clip.x + clip.w, static_cast<int>(width_)});
-    const int y1 = std::min({viewport_.y + viewport_.h, clip.y + clip.h, static_cast<int>(height_)});
-    scissorEmpty_ = x1 <= x0 || y1 <= y0;
-    scissor_ = {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
+    viewport = {g3d.getViewportX() + ox, g3d.getViewportY() + oy, g3d.getViewportWidth(), g3d.getViewportHeight()};
+    const int x0 = std::max({viewport.x, clip.x, 0});
+    const int y0 = std::max({viewport.y, clip.y, 0});
+    const int x1 = std::min({viewport.x + viewport.w, clip.x + clip.w, width});
+    const int y1 = std::min({viewport.y + viewport.h, clip.y + clip.h, height});
+    return {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
+}
+
+void Renderer::applyViewport(Graphics3D& g3d) {
+    scissor_ = drawArea(g3d, viewport_);
+    scissorEmpty_ = scissor_.w <= 0 || scissor_.h <= 0;
     depthNear_ = g3d.getDepthRangeNear();
     depthFar_ = g3d.getDepthRangeFar();
     if (scissorEmpty_) return;
@@ -380,10 +425,12 @@ void Renderer::fillFog(DrawUniforms& u, const Appearance* app) const {
 }
 
 void Renderer::clear(Graphics3D& g3d, const Background* background) {
-    begin(g3d);
+    const bool clearColor = !background || background->isColorClearEnabled();
+    Rect viewport;
+    const Rect area = drawArea(g3d, viewport);
+    begin(g3d, clearColor && area.x == 0 && area.y == 0 && area.w == g3d.targetWidth() && area.h == g3d.targetHeight());
     applyViewport(g3d);
     if (scissorEmpty_) return;
-    const bool clearColor = !background || background->isColorClearEnabled();
     const bool clearDepth = (!background || background->isDepthClearEnabled()) && hasDepth_;
     VkClearRect rect{{{scissor_.x, scissor_.y}, {static_cast<std::uint32_t>(scissor_.w), static_cast<std::uint32_t>(scissor_.h)}}, 0, 1};
     VkClearAttachment attachments[2]{};
@@ -562,7 +609,7 @@ void Renderer::drawSubmesh(const detail::RenderQueue& queue, const detail::Rende
     }
 
     const PolygonMode* pm = app->getPolygonMode().get();
-    const Material* material = app->getMaterial().get();
+    const Material* material = debug_.unlit ? nullptr : app->getMaterial().get();
     std::int32_t flags = 0;
     if (vm.present[1]) flags |= F_HAS_NORMALS;
     if (vm.present[2]) flags |= F_HAS_COLORS;
@@ -607,6 +654,7 @@ void Renderer::drawSubmesh(const detail::RenderQueue& queue, const detail::Rende
     key.blend = blendIndex(cm);
     key.writeMask = writeMask(cm);
     key.samples = static_cast<std::uint8_t>(samples_);
+    key.wireframe = debug_.wireframe ? 1 : 0;
     bindPipeline(key);
     setDepthState(!cm || cm->isDepthTestEnabled(), !cm || cm->isDepthWriteEnabled(), cm ? cm->getDepthOffsetFactor() : 0.0f,
                   cm ? cm->getDepthOffsetUnits() : 0.0f);
@@ -677,30 +725,62 @@ void Renderer::release(Graphics3D& g3d) {
     if (!recording_) return;
     recording_ = false;
     vkCmdEndRendering(cmd_);
-    barrier(cmd_, color_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+    const VkImage colorImage = target_->image;
+    barrier(cmd_, colorImage, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
             VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
             VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
-    VkBufferImageCopy copy{};
-    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    copy.imageExtent = {width_, height_, 1};
-    vkCmdCopyImageToBuffer(cmd_, color_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, transfer_.buffer, 1, &copy);
-    VkMemoryBarrier2 hostRead{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-    hostRead.srcStageMask = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
-    hostRead.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-    hostRead.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-    hostRead.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dep.memoryBarrierCount = 1;
-    dep.pMemoryBarriers = &hostRead;
-    vkCmdPipelineBarrier2(cmd_, &dep);
+    // A window reads back only on request (screenshots); other targets always.
+    const bool readback = window_ ? window_->takeReadbackRequest() : true;
+    // A window screenshot with its overlay reads the swapchain image instead.
+    bool readbackBgra = readback && window_ && window_->readbackWithOverlay();
+    if (readback && !readbackBgra) {
+        VkBufferImageCopy copy{};
+        copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        copy.imageExtent = {width_, height_, 1};
+        vkCmdCopyImageToBuffer(cmd_, colorImage, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, transfer_.buffer, 1, &copy);
+        VkMemoryBarrier2 hostRead{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+        hostRead.srcStageMask = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
+        hostRead.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+        hostRead.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+        hostRead.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+        dep.memoryBarrierCount = 1;
+        dep.pMemoryBarriers = &hostRead;
+        vkCmdPipelineBarrier2(cmd_, &dep);
+    }
+    const bool presenting = window_ && recordPresent(*window_, readbackBgra);
+    if (readbackBgra && !presenting) readbackBgra = false;
     check(vkEndCommandBuffer(cmd_), "vkEndCommandBuffer");
     vkResetFences(ctx_->device(), 1, &fence_);
-    ctx_->submit(cmd_, fence_);
+    if (presenting) {
+        Swapchain& swapchain = window_->swapchain();
+        ctx_->submit(cmd_, fence_, swapchain.acquiredSemaphore(), VK_PIPELINE_STAGE_TRANSFER_BIT,
+                     swapchain.renderedSemaphore());
+        swapchain.present();
+        window_->markPresented();
+    } else {
+        ctx_->submit(cmd_, fence_);
+    }
     check(vkWaitForFences(ctx_->device(), 1, &fence_, VK_TRUE, UINT64_MAX), "vkWaitForFences (frame)");
     ++ctx_->frames;
     resources_->endFrame();
     for (Buffer& b : retiredQuads_) ctx_->destroy(b);
     retiredQuads_.clear();
+    // A window screenshot that could not be taken stays not ready.
+    if (!readback || (window_ && window_->readbackWithOverlay() && !readbackBgra)) return;
+    if (window_) window_->markReadback();
+    if (readbackBgra) {
+        // The swapchain's channel order into 0xAARRGGBB.
+        const bool bgra = window_->swapchain().format() == VK_FORMAT_B8G8R8A8_UNORM;
+        const auto* src = static_cast<const std::uint8_t*>(transfer_.mapped);
+        auto px = window_->pixels();
+        for (std::size_t i = 0; i < px.size(); ++i) {
+            const std::uint8_t* p = src + i * 4;
+            const std::uint32_t r = bgra ? p[2] : p[0], g = p[1], b = bgra ? p[0] : p[2];
+            px[i] = 0xFF000000u | (r << 16) | (g << 8) | b;
+        }
+        return;
+    }
 
     const auto* src = static_cast<const std::uint8_t*>(transfer_.mapped);
     const std::size_t n = static_cast<std::size_t>(width_) * height_;
@@ -719,6 +799,62 @@ void Renderer::release(Graphics3D& g3d) {
             px[i] = 0xFF000000u | (static_cast<std::uint32_t>(src[i * 4]) << 16) |
                     (static_cast<std::uint32_t>(src[i * 4 + 1]) << 8) | src[i * 4 + 2];
     }
+}
+
+bool Renderer::recordPresent(WindowTarget& window, bool& readback) {
+    Swapchain& swapchain = window.swapchain();
+    if (!swapchain.acquire(width_, height_)) return false;  // minimised: nothing to show
+    if (!swapchain.readable() || swapchain.extent().width != width_ || swapchain.extent().height != height_)
+        readback = false;
+    const VkImage image = swapchain.image();
+    // The wait on the acquire semaphore is at the transfer stage (submit).
+    barrier(cmd_, image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+            VK_PIPELINE_STAGE_2_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    // A blit converts RGBA to the swapchain's channel order (and scales if
+    // the surface imposed another size).
+    const VkExtent2D extent = swapchain.extent();
+    VkImageBlit blit{};
+    blit.srcSubresource = blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    blit.srcOffsets[1] = {static_cast<std::int32_t>(width_), static_cast<std::int32_t>(height_), 1};
+    blit.dstOffsets[1] = {static_cast<std::int32_t>(extent.width), static_cast<std::int32_t>(extent.height), 1};
+    vkCmdBlitImage(cmd_, target_->image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image,
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_NEAREST);
+    VkImageLayout layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
+    VkAccessFlags2 access = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+    if (WindowOverlay* overlay = window.overlay()) {
+        barrier(cmd_, image, VK_IMAGE_ASPECT_COLOR_BIT, layout, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, stage,
+                access, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+        overlay->record(cmd_, swapchain);
+        layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
+        access = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT;
+    }
+    if (readback) {
+        // The presented image, overlay included (a screenshot of the window).
+        barrier(cmd_, image, VK_IMAGE_ASPECT_COLOR_BIT, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, stage, access,
+                VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+        VkBufferImageCopy copy{};
+        copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        copy.imageExtent = {width_, height_, 1};
+        vkCmdCopyImageToBuffer(cmd_, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, transfer_.buffer, 1, &copy);
+        VkMemoryBarrier2 hostRead{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+        hostRead.srcStageMask = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
+        hostRead.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+        hostRead.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+        hostRead.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+        dep.memoryBarrierCount = 1;
+        dep.pMemoryBarriers = &hostRead;
+        vkCmdPipelineBarrier2(cmd_, &dep);
+        layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+        stage = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
+        access = 0;
+    }
+    barrier(cmd_, image, VK_IMAGE_ASPECT_COLOR_BIT, layout, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, stage, access,
+            VK_PIPELINE_STAGE_2_NONE, 0);
+    return true;
 }
 
 }  // namespace m3g::vk

@@ -24,6 +24,8 @@ struct RenderItem;
 
 namespace m3g::vk {
 
+class WindowTarget;
+
 class Renderer final : public detail::RenderBackend {
 public:
     Renderer();
@@ -42,7 +44,18 @@ private:
         VkDescriptorSet set = VK_NULL_HANDLE;
     };
 
-    void begin(Graphics3D& g3d);
+    /// Opens the frame's command buffer; `coveredByClear`: the first command
+    /// clears every pixel's colour, so the prior contents need not be loaded.
+    void begin(Graphics3D& g3d, bool coveredByClear = false);
+    /// The viewport (translated by the Graphics origin) and the pixels a
+    /// draw may touch: viewport ∩ Graphics clip ∩ target.
+    static Rect drawArea(const Graphics3D& g3d, Rect& viewport);
+    /// Records the copy of the frame into an acquired swapchain image, the
+    /// overlay and the layout for presenting; false when the window cannot
+    /// present now (zero size).
+    /// With `readback`, also copies the presented image to transfer_ (reset
+    /// to false when the surface's size is not the target's).
+    bool recordPresent(WindowTarget& window, bool& readback);
     void ensureTargetImages(std::uint32_t width, std::uint32_t height, VkSampleCountFlagBits samples);
     void applyViewport(Graphics3D& g3d);
     DrawUniforms& allocUniforms(VkDescriptorSet& set, std::uint32_t& offset);
@@ -68,6 +81,9 @@ private:
 
     // The bound target's images and the frame being recorded.
     Image color_, depth_;      // single-sampled colour (read back) and depth
+    Image* target_ = &color_;  // the colour image of this frame: color_ or a window's back image
+    WindowTarget* window_ = nullptr;  // the bound target when it is a window
+    DebugView debug_;                 // read at each frame's start
     Image msaaColor_, initial_;  // ANTIALIAS: multisampled colour and the prior contents to start from
     VkSampleCountFlagBits samples_ = VK_SAMPLE_COUNT_1_BIT;
     std::uint32_t width_ = 0, height_ = 0;

@@ -15,6 +15,19 @@ Graphics::Graphics(int width, int height) : width_(width), height_(height), clip
 
 Graphics::~Graphics() = default;
 
+void Graphics::resizeSurface(int width, int height) {
+    if (width <= 0 || height <= 0)
+        throw IllegalArgumentException(
+            detail::str("Graphics::resizeSurface: size ", width, " x ", height, " must be positive"));
+    width_ = width;
+    height_ = height;
+    translateX_ = translateY_ = 0;
+    clipX_ = clipY_ = 0;
+    clipW_ = width;
+    clipH_ = height;
+    pixels_.assign(static_cast<std::size_t>(width) * height, 0xFF000000u);
+}
+
 void Graphics::translate(int x, int y) noexcept {
     translateX_ += x;
     translateY_ += y;

@@ -43,6 +43,12 @@ public:
     std::span<std::uint32_t> pixels() noexcept { return pixels_; }
     std::span<const std::uint32_t> pixels() const noexcept { return pixels_; }
 
+protected:
+    /// For surfaces whose size follows something else (a window): a new
+    /// size, opaque black pixels, no translation, the clip on the whole
+    /// surface. IAE unless width > 0 and height > 0.
+    void resizeSurface(int width, int height);
+
 private:
     int width_, height_;
     int translateX_ = 0, translateY_ = 0;

@@ -56,6 +56,15 @@ std::uint64_t validationMessageCount();
 /// The last validation message, or "" (for test failure output).
 std::string lastValidationMessage();
 
+/// Diagnostic drawing for viewers (an m3g-vk extension, off by default):
+/// applies to every Graphics3D from the next draw on.
+struct DebugView {
+    bool wireframe = false;  ///< meshes as triangle edges (when the device has fillModeNonSolid)
+    bool unlit = false;      ///< lighting off: Material ignored, vertex colours or white
+};
+void setDebugView(const DebugView& view) noexcept;
+DebugView debugView() noexcept;
+
 /// Counters since the device was created.
 struct RenderStats {
     std::uint64_t pipelinesCreated = 0;

@@ -1,0 +1,52 @@
+// Mouse, keyboard and drag-and-drop of the viewer window, and the same
+// actions driven by a script: orbit/pan/zoom, picking, shortcuts.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "ViewerScript.h"
+#include "ViewerState.h"
+
+struct GLFWwindow;
+
+namespace m3gview {
+
+class Input {
+public:
+    explicit Input(ViewerState& state) : state_(state) {}
+    /// Installs the GLFW callbacks (before ImGui's GLFW backend, which then
+    /// forwards events here; events ImGui wants are ignored here).
+    void install(GLFWwindow* window);
+    /// A file dropped on the window since the last call.
+    std::optional<std::string> takeDrop();
+
+    // Actions (from the window or a script); sizes are the view's pixels.
+    void drag(bool pan, float dx, float dy, int width, int height);
+    void scroll(float steps, int width, int height);
+    void click(float x, float y, int width, int height);
+    /// A shortcut by name (space r w l h f1 left right 0..9); false if unknown.
+    bool key(const std::string& name, int width, int height);
+
+    /// Runs one script command; `frame` renders a frame, `screenshot` one
+    /// to a file. Returns 0, or 1 after printing why the script failed.
+    int apply(const ScriptCommand& c, const std::function<void()>& frame,
+              const std::function<void(const std::string&, bool withUi)>& screenshot, int width, int height);
+
+private:
+    ViewerState& state_;
+    std::optional<std::string> dropped_;
+    double lastX_ = 0, lastY_ = 0, pressX_ = 0, pressY_ = 0;
+    int button_ = -1;
+    bool moved_ = false;
+
+    friend struct InputCallbacks;
+};
+
+/// Opens a file for the viewer: a .m3g or .png gives a scene; a .jar lists
+/// its .m3g entries in `state` and gives null; "game.jar!path/x.m3g" opens
+/// that entry. Throws on load errors.
+std::unique_ptr<ViewerScene> openScene(const std::string& request, int width, int height, ViewerState& state);
+
+}  // namespace m3gview

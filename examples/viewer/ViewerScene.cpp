@@ -1,0 +1,132 @@
+#include "ViewerScene.h"
+
+#include <algorithm>
+
+namespace m3gview {
+
+using namespace m3g;
+
+namespace {
+
+void countMeshes(Node& node, SceneStats& s) {
+    if (auto* mesh = dynamic_cast<Mesh*>(&node)) {
+        ++s.meshes;
+        s.skinned += dynamic_cast<SkinnedMesh*>(mesh) ? 1 : 0;
+        s.morphing += dynamic_cast<MorphingMesh*>(mesh) ? 1 : 0;
+        if (VertexBuffer* vb = mesh->vertexBuffer()) s.vertices += vb->getVertexCount();
+        for (int i = 0; i < mesh->getSubmeshCount(); ++i) {
+            ++s.submeshes;
+            if (Ref<IndexBuffer> ib = mesh->getIndexBuffer(i)) s.triangles += ib->getIndexCount() / 3;
+        }
+        if (auto* skinned = dynamic_cast<SkinnedMesh*>(mesh))
+            if (skinned->getSkeleton()) countMeshes(*skinned->getSkeleton(), s);
+    }
+    if (dynamic_cast<Sprite3D*>(&node)) ++s.sprites;
+    if (auto* group = dynamic_cast<Group*>(&node))
+        for (int i = 0; i < group->getChildCount(); ++i) countMeshes(*group->getChild(i), s);
+}
+
+/// A PNG: a World showing the image as an unscaled sprite, pixel for pixel.
+m3gcli::PreparedScene imageScene(const LoadResult& loaded) {
+    m3gcli::PreparedScene p;
+    p.world = Ref<World>(new World());
+    p.createdWorld = true;
+    Image2D* image = nullptr;
+    for (const auto& o : loaded.objects)
+        if ((image = dynamic_cast<Image2D*>(o.get()))) break;
+    if (!image) throw IllegalArgumentException("the file holds no image");
+    Ref<Appearance> appearance(new Appearance());
+    Ref<CompositingMode> blend(new CompositingMode());
+    blend->setBlending(CompositingMode::ALPHA);
+    appearance->setCompositingMode(blend.get());
+    Ref<Sprite3D> sprite(new Sprite3D(false, image, appearance.get()));
+    sprite->setTranslation(0.0f, 0.0f, -1.0f);
+    p.world->addChild(sprite.get());
+    Ref<Camera> camera(new Camera());
+    p.world->addChild(camera.get());
+    p.world->setActiveCamera(camera.get());
+    Ref<Background> background(new Background());
+    background->setColor(static_cast<int>(0xFF404040u));
+    p.world->setBackground(background.get());
+    p.notes.push_back("showing the PNG as an unscaled sprite");
+    return p;
+}
+
+}  // namespace
+
+ViewerScene::ViewerScene(const std::string& path, int width, int height, bool lenient) : name_(path) {
+    LoaderOptions options;
+    options.lenient = lenient;
+    loaded_ = Loader::loadDetailed(path, options);
+    setup(width, height);
+}
+
+ViewerScene::ViewerScene(std::string name, LoadResult loaded, int width, int height)
+    : name_(std::move(name)), loaded_(std::move(loaded)) {
+    setup(width, height);
+}
+
+void ViewerScene::setup(int width, int height) {
+    const bool image = loaded_.versionMajor == 0 && !loaded_.objects.empty() &&
+                       dynamic_cast<Image2D*>(loaded_.objects.front().get()) != nullptr;
+    prepared_ = image ? imageScene(loaded_) : m3gcli::prepareScene(loaded_, width, height);
+    World& w = *prepared_.world;
+    countMeshes(w, stats_);
+    for (const auto& o : loaded_.objects) {
+        if (auto* c = dynamic_cast<Camera*>(o.get())) cameras_.emplace_back(c);
+        if (auto* a = dynamic_cast<AnimationController*>(o.get())) controllers_.emplace_back(a);
+        if (auto* i = dynamic_cast<Image2D*>(o.get())) images_.emplace_back(i);
+        if (auto* k = dynamic_cast<KeyframeSequence*>(o.get()))
+            animationLength_ = std::max(animationLength_, k->getDuration());
+    }
+    // A camera the auto-framing added is not in the file but is the view.
+    if (Ref<Camera> active = w.getActiveCamera();
+        active && std::find(cameras_.begin(), cameras_.end(), active) == cameras_.end())
+        cameras_.insert(cameras_.begin(), active);
+
+    orbitCamera_ = Ref<Camera>(new Camera());
+    w.addChild(orbitCamera_.get());
+    headlight_ = Ref<Light>(new Light());
+    headlight_->setMode(Light::DIRECTIONAL);
+    w.addChild(headlight_.get());
+    hasOwnLight_ = m3gcli::hasContributingLight(w);
+    headlight_->setRenderingEnable(!hasOwnLight_);
+    resetView(width, height);
+    // The file's view first (its active camera), as the reference renders.
+    const auto it = std::find(cameras_.begin(), cameras_.end(), w.getActiveCamera());
+    useCamera(it != cameras_.end() && !image ? static_cast<int>(it - cameras_.begin()) : -1);
+    if (image) useCamera(0);
+}
+
+void ViewerScene::useCamera(int index) {
+    if (index < -1 || index >= static_cast<int>(cameras_.size())) index = -1;
+    cameraIndex_ = index;
+    prepared_.world->setActiveCamera(index < 0 ? orbitCamera_.get() : cameras_[static_cast<std::size_t>(index)].get());
+}
+
+void ViewerScene::resetView(int width, int height) {
+    std::array<float, 3> center{};
+    float radius = 1.0f;
+    m3gcli::sceneBounds(*prepared_.world, center, radius);
+    orbit_.frame(center, radius, 45.0f);
+    applyOrbit(width, height);
+}
+
+void ViewerScene::applyOrbit(int width, int height) {
+    const Transform t = orbit_.transform();
+    orbitCamera_->setTransform(&t);
+    orbitCamera_->setPerspective(orbit_.fovy, static_cast<float>(width) / static_cast<float>(std::max(1, height)),
+                                 orbit_.nearPlane(), orbit_.farPlane());
+}
+
+void ViewerScene::setHeadlight(bool on) { headlight_->setRenderingEnable(on); }
+
+void ViewerScene::followCamera() {
+    Ref<Camera> camera = prepared_.world->getActiveCamera();
+    Transform t;
+    if (camera && camera->getTransformTo(prepared_.world.get(), &t)) headlight_->setTransform(&t);
+}
+
+void ViewerScene::animate(int timeMs) { prepared_.world->animate(timeMs); }
+
+}  // namespace m3gview

@@ -1,0 +1,80 @@
+// What the viewer shows: a loaded file turned into a World (the corpus
+// rules of SceneSetup), the viewer's own orbit camera and headlight, the
+// file's cameras, animation state and statistics. No window, no ImGui.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <m3g/m3g.h>
+
+#include "OrbitCamera.h"
+#include "SceneSetup.h"
+
+namespace m3gview {
+
+struct SceneStats {
+    int meshes = 0, submeshes = 0, triangles = 0, vertices = 0, skinned = 0, morphing = 0, sprites = 0;
+};
+
+class ViewerScene {
+public:
+    /// Loads `path` (.m3g or .png; lenient when asked) for a view of
+    /// width x height. Throws what the Loader throws.
+    ViewerScene(const std::string& path, int width, int height, bool lenient);
+    /// The same from a load already made (a JAR entry); `name` for messages.
+    ViewerScene(std::string name, m3g::LoadResult loaded, int width, int height);
+
+    const std::string& name() const noexcept { return name_; }
+    m3g::World& world() const noexcept { return *prepared_.world; }
+    const m3g::LoadResult& loaded() const noexcept { return loaded_; }
+    const m3gcli::PreparedScene& prepared() const noexcept { return prepared_; }
+    const SceneStats& stats() const noexcept { return stats_; }
+    const std::vector<m3g::Ref<m3g::Camera>>& cameras() const noexcept { return cameras_; }
+    const std::vector<m3g::Ref<m3g::AnimationController>>& controllers() const noexcept { return controllers_; }
+    const std::vector<m3g::Ref<m3g::Image2D>>& images() const noexcept { return images_; }
+    /// Longest keyframe sequence duration in ms (0: nothing animates).
+    int animationLength() const noexcept { return animationLength_; }
+
+    /// Which camera renders: -1 the orbit camera, else cameras()[i].
+    void useCamera(int index);
+    int cameraIndex() const noexcept { return cameraIndex_; }
+    /// Puts the orbit camera back on the auto-framed view of the scene.
+    void resetView(int width, int height);
+    OrbitCamera& orbit() noexcept { return orbit_; }
+    /// Copies the orbit state into the orbit camera node (after input).
+    void applyOrbit(int width, int height);
+
+    /// A light at the camera, on by default when no light of the file
+    /// contributes (the note explains it).
+    bool hasOwnLight() const noexcept { return hasOwnLight_; }
+    void setHeadlight(bool on);
+    bool headlight() const noexcept { return headlight_->isRenderingEnabled(); }
+    /// Keeps the headlight at the rendering camera; call before rendering.
+    void followCamera();
+
+    /// Animates the World to `timeMs`.
+    void animate(int timeMs);
+
+private:
+    void setup(int width, int height);
+
+    std::string name_;
+    m3g::LoadResult loaded_;
+    m3gcli::PreparedScene prepared_;
+    SceneStats stats_;
+    std::vector<m3g::Ref<m3g::Camera>> cameras_;
+    std::vector<m3g::Ref<m3g::AnimationController>> controllers_;
+    std::vector<m3g::Ref<m3g::Image2D>> images_;
+    int animationLength_ = 0;
+    m3g::Ref<m3g::Camera> orbitCamera_;
+    m3g::Ref<m3g::Light> headlight_;
+    bool hasOwnLight_ = false;
+    int cameraIndex_ = -1;
+    OrbitCamera orbit_;
+};
+
+}  // namespace m3gview

@@ -1,0 +1,48 @@
+#include "ViewerSettings.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+namespace m3gview {
+
+std::string Settings::path() {
+    if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg) return std::string(xdg) + "/m3g-vk/viewer.ini";
+    if (const char* home = std::getenv("HOME"); home && *home) return std::string(home) + "/.config/m3g-vk/viewer.ini";
+    return "";
+}
+
+Settings Settings::load() {
+    Settings s;
+    const std::string file = path();
+    if (file.empty()) return s;
+    std::ifstream in(file);
+    std::string line;
+    while (std::getline(in, line)) {
+        const auto eq = line.find('=');
+        if (eq == std::string::npos) continue;
+        const std::string key = line.substr(0, eq), value = line.substr(eq + 1);
+        try {
+            if (key == "width") s.width = std::clamp(std::stoi(value), 64, 8192);
+            else if (key == "height") s.height = std::clamp(std::stoi(value), 64, 8192);
+            else if (key == "lastFile") s.lastFile = value;
+        } catch (const std::exception&) {
+            // A hand-edited value that is not a number: keep the default.
+        }
+    }
+    return s;
+}
+
+void Settings::save() const {
+    const std::string file = path();
+    if (file.empty()) return;
+    std::error_code ec;
+    std::filesystem::create_directories(std::filesystem::path(file).parent_path(), ec);
+    std::ofstream out(file);
+    out << "width=" << width << "\nheight=" << height << "\nlastFile=" << lastFile << "\n";
+    if (!out) std::fprintf(stderr, "m3g: view: could not save settings to %s\n", file.c_str());
+}
+
+}  // namespace m3gview

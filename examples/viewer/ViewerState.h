@@ -1,0 +1,62 @@
+// The viewer's state shared by its window loop, its UI panels and its
+// script runner.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <m3g/m3g.h>
+#include <m3g/vk/Vulkan.h>
+
+#include "ViewerScene.h"
+
+namespace m3gview {
+
+struct PickResult {
+    float x = 0, y = 0;  ///< where, in pixels
+    m3g::Ref<m3g::Node> node;
+    float distance = 0;
+    int submesh = 0;
+    float normal[3] = {0, 0, 0};
+    float s = 0, t = 0;
+};
+
+struct ViewerState {
+    std::unique_ptr<ViewerScene> scene;
+    std::string error;                  ///< last load or render error, shown in the window
+    std::vector<std::string> warnings;  ///< lenient-load warnings and scene notes
+    bool lenient = false;
+
+    // Animation (world time in ms).
+    bool playing = true;
+    float speed = 1.0f;
+    double timeMs = 0.0;
+    std::vector<float> controllerWeights;  ///< saved weights of disabled controllers
+
+    // View.
+    bool showUi = true;
+    m3g::vk::DebugView debug;
+    bool showNormals = false, showBounds = false, showBones = false;
+    m3g::Object3D* selected = nullptr;
+    std::optional<PickResult> pick;
+
+    // Statistics of the last frame.
+    double frameMs = 0.0, renderMs = 0.0;
+    std::uint64_t drawsPerFrame = 0;
+
+    // A JAR whose .m3g entries are listed for choosing.
+    std::string jarPath;
+    std::vector<std::string> jarEntries;
+
+    // Requests from the UI, handled by the loop.
+    std::string openRequest;      ///< a file (or "jar!entry") to open
+    std::string screenshotPath;   ///< save the next frame here
+    bool resetViewRequest = false;
+    bool quit = false;
+};
+
+}  // namespace m3gview

@@ -1,0 +1,408 @@
+#include "ViewerUi.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
+
+#include <imgui.h>
+#include <nlohmann/json.hpp>
+
+#include <m3g/vk/ImGuiOverlay.h>
+
+#include "ObjectDump.h"
+
+namespace m3gview {
+
+using namespace m3g;
+
+namespace {
+
+const char* formatName(int format) {
+    switch (format) {
+        case Image2D::ALPHA: return "ALPHA";
+        case Image2D::LUMINANCE: return "LUMINANCE";
+        case Image2D::LUMINANCE_ALPHA: return "LUMINANCE_ALPHA";
+        case Image2D::RGB: return "RGB";
+        case Image2D::RGBA: return "RGBA";
+        default: return "?";
+    }
+}
+
+// Where a panel starts (fractions of the window), until the user moves it.
+bool beginPanel(const char* name, float x, float y, float w, float h) {
+    const ImVec2 size = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(x * size.x, 20.0f + y * (size.y - 20.0f)), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(w * size.x, h * (size.y - 20.0f)), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowBgAlpha(0.85f);
+    return ImGui::Begin(name);
+}
+
+std::string label(const Object3D& o) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%s##%llu", o.getClassName(), static_cast<unsigned long long>(o.getObjectId()));
+    std::string s = buf;
+    if (o.getUserID() != 0) s = std::string(o.getClassName()) + " #" + std::to_string(o.getUserID()) + s.substr(s.find("##"));
+    return s;
+}
+
+void sceneTree(ViewerState& state, Node& node) {
+    ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_OpenOnArrow | ImGuiTreeNodeFlags_SpanAvailWidth;
+    auto* group = dynamic_cast<Group*>(&node);
+    auto* skinned = dynamic_cast<SkinnedMesh*>(&node);
+    const bool leaf = !(group && group->getChildCount() > 0) && !(skinned && skinned->getSkeleton());
+    if (leaf) flags |= ImGuiTreeNodeFlags_Leaf;
+    if (state.selected == &node) flags |= ImGuiTreeNodeFlags_Selected;
+    bool visible = node.isRenderingEnabled();
+    ImGui::PushID(static_cast<int>(node.getObjectId()));
+    if (ImGui::Checkbox("##visible", &visible)) node.setRenderingEnable(visible);
+    ImGui::SameLine();
+    const bool open = ImGui::TreeNodeEx(label(node).c_str(), flags);
+    if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) state.selected = &node;
+    if (open) {
+        if (group)
+            for (int i = 0; i < group->getChildCount(); ++i) sceneTree(state, *group->getChild(i));
+        if (skinned && skinned->getSkeleton()) sceneTree(state, *skinned->getSkeleton());
+        ImGui::TreePop();
+    }
+    ImGui::PopID();
+}
+
+// The dump's members by the class that declares them (ObjectDump writes
+// them in this order: Object3D, Transformable, Node, Group, then the class).
+const char* declaringClass(const std::string& key, const char* cls) {
+    static const std::set<std::string> object3d{"id", "class", "userID", "userObject", "userParameters",
+                                                "animationTracks", "references"};
+    static const std::set<std::string> transformable{"translation", "orientation", "scale", "transform",
+                                                     "compositeTransform"};
+    static const std::set<std::string> node{"parent", "renderingEnabled", "pickingEnabled", "alphaFactor", "scope",
+                                            "alignment"};
+    static const std::set<std::string> group{"childCount", "children"};
+    static const std::set<std::string> mesh{"vertexBuffer", "submeshCount", "submeshes"};
+    if (object3d.count(key)) return "Object3D";
+    if (transformable.count(key)) return "Transformable";
+    if (node.count(key)) return "Node";
+    if (group.count(key)) return "Group";
+    if (mesh.count(key)) return "Mesh";
+    return cls;
+}
+
+void properties(ViewerState& state) {
+    if (!beginPanel("Properties", 0.74f, 0.0f, 0.26f, 0.55f)) {
+        ImGui::End();
+        return;
+    }
+    if (!state.selected) {
+        ImGui::TextDisabled("Select an object in the scene tree, the object list or by clicking the view.");
+        ImGui::End();
+        return;
+    }
+    // Dumped again every frame: animation changes the values.
+    Object3D* root = state.selected;
+    m3gcli::DumpOptions options;
+    options.maxVertices = 8;
+    options.maxIndices = 24;
+    options.maxKeyframes = 8;
+    const nlohmann::ordered_json doc = nlohmann::ordered_json::parse(m3gcli::dumpJson(std::span<Object3D* const>(&root, 1), options));
+    const nlohmann::ordered_json& o = doc["objects"][0];
+    const char* cls = root->getClassName();
+    std::string current;
+    bool open = false;
+    for (auto it = o.begin(); it != o.end(); ++it) {
+        const std::string group = declaringClass(it.key(), cls);
+        if (group != current) {
+            current = group;
+            open = ImGui::CollapsingHeader(group.c_str(), ImGuiTreeNodeFlags_DefaultOpen);
+        }
+        if (!open) continue;
+        std::string value = it.value().dump();
+        if (value.size() > 160) value = value.substr(0, 157) + "...";
+        ImGui::TextWrapped("%s: %s", it.key().c_str(), value.c_str());
+    }
+    ImGui::End();
+}
+
+void animation(ViewerState& state) {
+    ViewerScene& scene = *state.scene;
+    if (!beginPanel("Animation", 0.24f, 0.82f, 0.5f, 0.18f)) {
+        ImGui::End();
+        return;
+    }
+    if (ImGui::Button(state.playing ? "Pause" : "Play")) state.playing = !state.playing;
+    ImGui::SameLine();
+    if (ImGui::Button("<")) state.timeMs = std::max(0.0, state.timeMs - 1000.0 / 30.0);
+    ImGui::SameLine();
+    if (ImGui::Button(">")) state.timeMs += 1000.0 / 30.0;
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(120);
+    ImGui::SliderFloat("speed", &state.speed, 0.0f, 4.0f, "%.2fx");
+    float t = static_cast<float>(state.timeMs);
+    const float length = static_cast<float>(std::max(scene.animationLength(), 1000));
+    if (ImGui::SliderFloat("time (ms)", &t, 0.0f, std::max(length, t))) state.timeMs = t;
+    const auto& controllers = scene.controllers();
+    state.controllerWeights.resize(controllers.size(), -1.0f);
+    for (std::size_t i = 0; i < controllers.size(); ++i) {
+        AnimationController& c = *controllers[i];
+        ImGui::PushID(static_cast<int>(i));
+        bool on = c.getWeight() != 0.0f || state.controllerWeights[i] < 0.0f;
+        if (ImGui::Checkbox("", &on)) {
+            if (on) {
+                c.setWeight(state.controllerWeights[i] < 0.0f ? 1.0f : state.controllerWeights[i]);
+                state.controllerWeights[i] = -1.0f;
+            } else {
+                state.controllerWeights[i] = c.getWeight();
+                c.setWeight(0.0f);
+            }
+        }
+        ImGui::SameLine();
+        ImGui::Text("AnimationController %zu: speed %.2f, weight %.2f, active [%d, %d)", i, c.getSpeed(),
+                    c.getWeight(), c.getActiveIntervalStart(), c.getActiveIntervalEnd());
+        ImGui::PopID();
+    }
+    if (controllers.empty()) ImGui::TextDisabled("No AnimationController in the file.");
+    ImGui::End();
+}
+
+void textures(ViewerState& state, vk::ImGuiOverlay& overlay) {
+    if (!beginPanel("Textures", 0.74f, 0.55f, 0.26f, 0.45f)) {
+        ImGui::End();
+        return;
+    }
+    const auto& images = state.scene->images();
+    if (images.empty()) ImGui::TextDisabled("No Image2D in the file.");
+    for (const auto& image : images) {
+        ImGui::Text("Image2D %dx%d %s%s", image->getWidth(), image->getHeight(), formatName(image->getFormat()),
+                    image->isMutable() ? " (mutable)" : "");
+        const float scale = std::min(1.0f, 256.0f / static_cast<float>(std::max(image->getWidth(), image->getHeight())));
+        ImGui::Image(overlay.texture(*image), ImVec2(image->getWidth() * scale, image->getHeight() * scale));
+        if (ImGui::IsItemClicked()) state.selected = image.get();
+        ImGui::Separator();
+    }
+    ImGui::End();
+}
+
+void objectsInFileOrder(ViewerState& state) {
+    if (!beginPanel("Objects", 0.0f, 0.5f, 0.24f, 0.5f)) {
+        ImGui::End();
+        return;
+    }
+    int index = 1;
+    for (const auto& o : state.scene->loaded().objects) {
+        const std::string text = std::to_string(index++) + " " + label(*o);
+        if (ImGui::Selectable(text.c_str(), state.selected == o.get())) state.selected = o.get();
+    }
+    ImGui::End();
+}
+
+void statsAndDebug(ViewerState& state) {
+    ViewerScene& scene = *state.scene;
+    if (!beginPanel("View", 0.24f, 0.0f, 0.3f, 0.32f)) {
+        ImGui::End();
+        return;
+    }
+    const SceneStats& s = scene.stats();
+    ImGui::Text("%s", scene.name().c_str());
+    ImGui::Text("meshes %d (skinned %d, morphing %d), sprites %d", s.meshes, s.skinned, s.morphing, s.sprites);
+    ImGui::Text("submeshes %d, triangles %d, vertices %d", s.submeshes, s.triangles, s.vertices);
+    ImGui::Text("draws %llu, frame %.2f ms (render %.2f ms)", static_cast<unsigned long long>(state.drawsPerFrame),
+                state.frameMs, state.renderMs);
+    ImGui::Text("skinning: CPU; device: %s", vk::currentDevice().name.c_str());
+    ImGui::Separator();
+    // Camera choice: the orbit camera or any Camera of the file.
+    std::string current = scene.cameraIndex() < 0 ? "orbit (viewer)" : "camera " + std::to_string(scene.cameraIndex());
+    if (ImGui::BeginCombo("camera", current.c_str())) {
+        if (ImGui::Selectable("orbit (viewer)", scene.cameraIndex() < 0)) scene.useCamera(-1);
+        for (int i = 0; i < static_cast<int>(scene.cameras().size()); ++i)
+            if (ImGui::Selectable(("camera " + std::to_string(i) + " " + label(*scene.cameras()[i])).c_str(),
+                                  scene.cameraIndex() == i))
+                scene.useCamera(i);
+        ImGui::EndCombo();
+    }
+    if (ImGui::Button("Reset view (R)")) state.resetViewRequest = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Screenshot")) state.screenshotPath = "m3g-screenshot.png";
+    ImGui::Checkbox("wireframe (W)", &state.debug.wireframe);
+    ImGui::SameLine();
+    ImGui::Checkbox("unlit (L)", &state.debug.unlit);
+    ImGui::Checkbox("normals", &state.showNormals);
+    ImGui::SameLine();
+    ImGui::Checkbox("bounds", &state.showBounds);
+    ImGui::SameLine();
+    ImGui::Checkbox("bones", &state.showBones);
+    bool headlight = scene.headlight();
+    if (ImGui::Checkbox("headlight", &headlight)) scene.setHeadlight(headlight);
+    if (!scene.hasOwnLight())
+        ImGui::TextWrapped("No light of the file contributes: the headlight lights the scene.");
+    if (state.pick) {
+        const PickResult& p = *state.pick;
+        ImGui::Separator();
+        if (p.node) {
+            ImGui::Text("pick at (%.0f, %.0f): %s, distance %.4f, submesh %d", p.x, p.y, p.node->getClassName(),
+                        p.distance, p.submesh);
+            ImGui::Text("normal (%.3f, %.3f, %.3f), texcoord 0 (%.3f, %.3f)", p.normal[0], p.normal[1], p.normal[2],
+                        p.s, p.t);
+        } else {
+            ImGui::Text("pick at (%.0f, %.0f): nothing", p.x, p.y);
+        }
+    }
+    ImGui::End();
+}
+
+void menu(ViewerState& state) {
+    static char path[1024] = "";
+    if (!ImGui::BeginMainMenuBar()) return;
+    if (ImGui::BeginMenu("File")) {
+        ImGui::InputText("path", path, sizeof path);
+        if (ImGui::MenuItem("Open")) state.openRequest = path;
+        if (ImGui::MenuItem("Quit", "Esc")) state.quit = true;
+        ImGui::EndMenu();
+    }
+    ImGui::EndMainMenuBar();
+}
+
+void messages(ViewerState& state) {
+    if (state.error.empty() && state.warnings.empty() && state.jarEntries.empty()) return;
+    beginPanel("Messages", 0.54f, 0.0f, 0.2f, 0.2f);
+    if (!state.error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", state.error.c_str());
+    for (const auto& w : state.warnings) ImGui::TextWrapped("%s", w.c_str());
+    if (!state.jarEntries.empty()) {
+        ImGui::Text("%s: pick a model", state.jarPath.c_str());
+        for (const auto& e : state.jarEntries)
+            if (ImGui::Selectable(e.c_str())) state.openRequest = state.jarPath + "!" + e;
+    }
+    ImGui::End();
+}
+
+}  // namespace
+
+void drawUi(ViewerState& state, vk::ImGuiOverlay& overlay, int, int) {
+    menu(state);
+    messages(state);
+    if (!state.scene) return;
+    beginPanel("Scene", 0.0f, 0.0f, 0.24f, 0.5f);
+    sceneTree(state, state.scene->world());
+    ImGui::End();
+    objectsInFileOrder(state);
+    properties(state);
+    animation(state);
+    textures(state, overlay);
+    statsAndDebug(state);
+}
+
+// ---- debug lines ----
+
+namespace {
+
+struct Projector {
+    Transform worldToClip;
+    float w, h;
+    /// Pixel position of a world point, or false when behind the camera.
+    bool operator()(const float* p, ImVec2& out) const {
+        float v[4] = {p[0], p[1], p[2], 1.0f};
+        worldToClip.transform(v);
+        if (v[3] <= 1e-6f) return false;
+        out = ImVec2((v[0] / v[3] * 0.5f + 0.5f) * w, (0.5f - v[1] / v[3] * 0.5f) * h);
+        return true;
+    }
+};
+
+void line(ImDrawList* dl, const Projector& proj, const float* a, const float* b, ImU32 color) {
+    ImVec2 pa, pb;
+    if (proj(a, pa) && proj(b, pb)) dl->AddLine(pa, pb, color);
+}
+
+void toWorld(const Transform& t, const float* in, float* out) {
+    float v[4] = {in[0], in[1], in[2], 1.0f};
+    t.transform(v);
+    for (int k = 0; k < 3; ++k) out[k] = v[3] != 0.0f ? v[k] / v[3] : v[k];
+}
+
+void meshLines(ViewerState& state, World& world, Node& node, const Projector& proj, ImDrawList* dl, int& budget) {
+    if (auto* mesh = dynamic_cast<Mesh*>(&node); mesh && node.isRenderingEnabled()) {
+        Transform t;
+        VertexBuffer* vb = mesh->vertexBuffer();
+        float sb[4] = {1, 0, 0, 0};
+        Ref<VertexArray> pos = vb ? vb->getPositions(sb) : nullptr;
+        if (pos && mesh->getTransformTo(&world, &t)) {
+            const int n = pos->getVertexCount();
+            float lo[3] = {1e30f, 1e30f, 1e30f}, hi[3] = {-1e30f, -1e30f, -1e30f};
+            Ref<VertexArray> normals = vb->getNormals();
+            for (int v = 0; v < n; ++v) {
+                float p[3];
+                for (int k = 0; k < 3; ++k) {
+                    p[k] = sb[0] * static_cast<float>(pos->value(v, k)) + sb[k + 1];
+                    lo[k] = std::min(lo[k], p[k]);
+                    hi[k] = std::max(hi[k], p[k]);
+                }
+                if (state.showNormals && normals && budget-- > 0) {
+                    // Rest-pose normals (a skinned mesh's deformed ones are not shown).
+                    const float scale = normals->getComponentType() == 1 ? 1.0f / 127.0f : 1.0f / 32767.0f;
+                    const float len = 0.05f * state.scene->orbit().radius;
+                    float q[3], a[3], b[3];
+                    for (int k = 0; k < 3; ++k) q[k] = p[k] + len * scale * static_cast<float>(normals->value(v, k));
+                    toWorld(t, p, a);
+                    toWorld(t, q, b);
+                    line(dl, proj, a, b, IM_COL32(80, 160, 255, 255));
+                }
+            }
+            if (state.showBounds && n > 0) {
+                float c[8][3];
+                for (int i = 0; i < 8; ++i) {
+                    const float local[3] = {(i & 1) ? hi[0] : lo[0], (i & 2) ? hi[1] : lo[1], (i & 4) ? hi[2] : lo[2]};
+                    toWorld(t, local, c[i]);
+                }
+                for (int i = 0; i < 8; ++i)
+                    for (int bit : {1, 2, 4})
+                        if (!(i & bit)) line(dl, proj, c[i], c[i | bit], IM_COL32(255, 220, 0, 255));
+            }
+        }
+        if (auto* skinned = dynamic_cast<SkinnedMesh*>(mesh); skinned && state.showBones && skinned->getSkeleton()) {
+            // Each bone node to its parent, within the skeleton.
+            std::vector<Node*> stack{skinned->getSkeleton().get()};
+            while (!stack.empty()) {
+                Node* b = stack.back();
+                stack.pop_back();
+                auto* g = dynamic_cast<Group*>(b);
+                if (!g) continue;
+                Transform tg;
+                if (!g->getTransformTo(&world, &tg)) continue;
+                const float origin[3] = {0, 0, 0};
+                float a[3];
+                toWorld(tg, origin, a);
+                for (int i = 0; i < g->getChildCount(); ++i) {
+                    Node* child = g->getChild(i);
+                    Transform tc;
+                    if (child->getTransformTo(&world, &tc)) {
+                        float c[3];
+                        toWorld(tc, origin, c);
+                        line(dl, proj, a, c, IM_COL32(255, 80, 200, 255));
+                    }
+                    stack.push_back(child);
+                }
+            }
+        }
+    }
+    if (auto* group = dynamic_cast<Group*>(&node))
+        for (int i = 0; i < group->getChildCount(); ++i) meshLines(state, world, *group->getChild(i), proj, dl, budget);
+}
+
+}  // namespace
+
+void drawDebugLines(ViewerState& state, int width, int height) {
+    if (!state.scene || !(state.showNormals || state.showBounds || state.showBones)) return;
+    World& world = state.scene->world();
+    Ref<Camera> camera = world.getActiveCamera();
+    Transform cameraToWorld;
+    if (!camera || !camera->getTransformTo(&world, &cameraToWorld)) return;
+    Projector proj;
+    camera->getProjection(&proj.worldToClip);
+    Transform view = cameraToWorld;
+    view.invert();
+    proj.worldToClip.postMultiply(&view);
+    proj.w = static_cast<float>(width);
+    proj.h = static_cast<float>(height);
+    int budget = 20000;  // normals drawn at most
+    meshLines(state, world, world, proj, ImGui::GetBackgroundDrawList(), budget);
+}
+
+}  // namespace m3gview

@@ -1,0 +1,323 @@
+// m3g view: the desktop preview app (GLFW window, Vulkan swapchain through
+// m3g::vk::WindowTarget, Dear ImGui panels). Also scriptable for tests:
+// --frames N --screenshot OUT.png, or --script FILE (docs/viewer.md).
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+
+#include <m3g/m3g.h>
+#include <m3g/vk/ImGuiOverlay.h>
+#include <m3g/vk/Vulkan.h>
+#include <m3g/vk/WindowTarget.h>
+
+#include "CliArgs.h"
+#include "Commands.h"
+#include "ImageIO.h"
+#include "ViewerInput.h"
+#include "ViewerScript.h"
+#include "ViewerSettings.h"
+#include "ViewerState.h"
+#include "ViewerUi.h"
+
+namespace m3gcli {
+
+namespace {
+
+using namespace m3gview;
+using Clock = std::chrono::steady_clock;
+
+struct ViewArgs {
+    std::string file;
+    int width = 0, height = 0;  // 0: remembered or 1024x768
+    int time = 0;
+    int frames = -1;  // -1: interactive
+    int camera = -2;  // -2: the file's choice
+    std::string screenshot, script;
+    bool noUi = false, lenient = false, vsync = true, headlight = true;
+};
+
+ViewArgs parse(std::span<const std::string_view> args) {
+    ViewArgs r;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string_view a = args[i];
+        auto value = [&](const char* name) -> std::string_view {
+            if (i + 1 >= args.size()) throw CliError(std::string("view: ") + name + " needs a value");
+            return args[++i];
+        };
+        auto integer = [&](const char* name) {
+            auto v = parseInt(value(name));
+            if (!v) throw CliError(std::string("view: ") + name + " takes an integer");
+            return *v;
+        };
+        if (a == "--size") {
+            const std::string_view s = value("--size");
+            const auto x = s.find('x');
+            auto w = x == std::string_view::npos ? std::nullopt : parseInt(s.substr(0, x));
+            auto h = x == std::string_view::npos ? std::nullopt : parseInt(s.substr(x + 1));
+            if (!w || !h || *w <= 0 || *h <= 0) throw CliError("view: --size takes WxH, e.g. 1024x768");
+            r.width = *w;
+            r.height = *h;
+        } else if (a == "--time") r.time = integer("--time");
+        else if (a == "--frames") {
+            r.frames = integer("--frames");
+            if (r.frames < 1) throw CliError("view: --frames must be at least 1");
+        } else if (a == "--camera-index") r.camera = integer("--camera-index");
+        else if (a == "--screenshot") r.screenshot = value("--screenshot");
+        else if (a == "--script") r.script = value("--script");
+        else if (a == "--no-ui") r.noUi = true;
+        else if (a == "--lenient") r.lenient = true;
+        else if (a == "--no-vsync") r.vsync = false;
+        else if (a == "--no-headlight") r.headlight = false;
+        else if (!a.empty() && a[0] == '-') throw CliError("view: unknown option " + std::string(a));
+        else if (r.file.empty()) r.file = a;
+        else throw CliError("view: unexpected operand " + std::string(a));
+    }
+    if (!r.screenshot.empty() && r.frames < 0 && r.script.empty()) r.frames = 1;
+    return r;
+}
+
+/// The window and everything bound to it.
+class ViewerApp {
+public:
+    ViewerApp(const ViewArgs& args, Settings& settings) : args_(args), settings_(settings) {}
+    int run();
+
+private:
+    void open(const std::string& request);
+    void frame();
+    void saveScreenshot(const std::string& path, bool withUi = false);
+
+    const ViewArgs& args_;
+    Settings& settings_;
+    GLFWwindow* window_ = nullptr;
+    m3g::Ref<m3g::vk::WindowTarget> target_;
+    std::shared_ptr<m3g::vk::ImGuiOverlay> overlay_;
+    ViewerState state_;
+    Input input_{state_};
+    Clock::time_point last_ = Clock::now();
+    int fbWidth_ = 0, fbHeight_ = 0;
+};
+
+void ViewerApp::open(const std::string& request) {
+    state_.error.clear();
+    state_.warnings.clear();
+    state_.selected = nullptr;
+    state_.pick.reset();
+    state_.controllerWeights.clear();
+    try {
+        auto scene = openScene(request, fbWidth_, fbHeight_, state_);
+        if (!scene) return;  // a JAR: its entries are listed
+        state_.scene = std::move(scene);
+        for (const auto& w : state_.scene->loaded().warnings) state_.warnings.push_back("warning: " + w);
+        for (const auto& n : state_.scene->prepared().notes) state_.warnings.push_back(n);
+        if (!args_.headlight) state_.scene->setHeadlight(false);
+        if (args_.camera >= -1) state_.scene->useCamera(args_.camera);
+        settings_.lastFile = request;
+        glfwSetWindowTitle(window_, ("m3g view: " + request).c_str());
+    } catch (const std::exception& e) {
+        state_.error = request + ": " + e.what();
+        std::fprintf(stderr, "m3g: %s\n", state_.error.c_str());
+    }
+}
+
+void ViewerApp::saveScreenshot(const std::string& path, bool withUi) {
+    // The 3D view, or the whole window with the UI.
+    target_->requestReadback(withUi);
+    frame();
+    if (!target_->readbackReady()) throw std::runtime_error("view: the screenshot frame was not rendered");
+    writePng(path, fromGraphics(*target_), false);
+    std::fprintf(stderr, "m3g: wrote %s (%dx%d)\n", path.c_str(), target_->getWidth(), target_->getHeight());
+}
+
+void ViewerApp::frame() {
+    const auto now = Clock::now();
+    const double dt = std::chrono::duration<double, std::milli>(now - last_).count();
+    last_ = now;
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window_, &w, &h);
+    if (w <= 0 || h <= 0) return;  // minimised
+    if (w != fbWidth_ || h != fbHeight_) {
+        fbWidth_ = w;
+        fbHeight_ = h;
+        target_->resize(w, h);
+        if (state_.scene) state_.scene->applyOrbit(w, h);
+    }
+    // Interactive sessions follow the clock; tests (frames/script) do not.
+    if (state_.playing && args_.frames < 0 && args_.script.empty()) state_.timeMs += dt * state_.speed;
+
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    if (state_.showUi) drawUi(state_, *overlay_, w, h);
+    drawDebugLines(state_, w, h);
+    ImGui::Render();
+
+    m3g::vk::setDebugView(state_.debug);
+    m3g::Graphics3D* g3d = m3g::Graphics3D::getInstance();
+    const auto before = m3g::vk::renderStats().draws;
+    const auto t0 = Clock::now();
+    g3d->bindTarget(target_.get(), true, 0);
+    try {
+        if (state_.scene) {
+            state_.scene->animate(static_cast<int>(state_.timeMs));
+            state_.scene->followCamera();
+            g3d->render(&state_.scene->world());
+        } else {
+            g3d->clear(nullptr);
+        }
+    } catch (const std::exception& e) {
+        state_.error = std::string("render: ") + e.what();
+        try {
+            g3d->clear(nullptr);
+        } catch (...) {
+        }
+    }
+    g3d->releaseTarget();
+    state_.renderMs = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    state_.frameMs = dt;
+    state_.drawsPerFrame = m3g::vk::renderStats().draws - before;
+}
+
+int ViewerApp::run() {
+    glfwSetErrorCallback([](int code, const char* text) { std::fprintf(stderr, "m3g: GLFW error %d: %s\n", code, text); });
+    if (!glfwInit()) {
+        std::fprintf(stderr, "m3g: view: cannot open a window (no display? set DISPLAY, or run under xvfb-run)\n");
+        return 1;
+    }
+    if (!glfwVulkanSupported()) {
+        std::fprintf(stderr, "m3g: view: GLFW finds no Vulkan loader (Debian: libvulkan1 mesa-vulkan-drivers)\n");
+        glfwTerminate();
+        return 1;
+    }
+    std::uint32_t count = 0;
+    const char** names = glfwGetRequiredInstanceExtensions(&count);
+    std::vector<std::string> extensions(names, names + count);
+    if (!m3g::vk::requestWindowExtensions(extensions))
+        std::fprintf(stderr, "m3g: view: the Vulkan device already exists without window extensions\n");
+
+    const int width = args_.width ? args_.width : settings_.width;
+    const int height = args_.height ? args_.height : settings_.height;
+    glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
+    // Test runs: the window must be exactly the requested size.
+    glfwWindowHint(GLFW_RESIZABLE, args_.frames < 0 && args_.script.empty() ? GLFW_TRUE : GLFW_FALSE);
+    window_ = glfwCreateWindow(width, height, "m3g view", nullptr, nullptr);
+    if (!window_) {
+        glfwTerminate();
+        std::fprintf(stderr, "m3g: view: glfwCreateWindow failed\n");
+        return 1;
+    }
+    glfwGetFramebufferSize(window_, &fbWidth_, &fbHeight_);
+    GLFWwindow* window = window_;
+    target_ = m3g::Ref<m3g::vk::WindowTarget>(new m3g::vk::WindowTarget(
+        [window](void* instance) {
+            VkSurfaceKHR surface = VK_NULL_HANDLE;
+            const VkResult r = glfwCreateWindowSurface(static_cast<VkInstance>(instance), window, nullptr, &surface);
+            if (r != VK_SUCCESS) throw m3g::vk::VulkanError("glfwCreateWindowSurface failed (" + std::to_string(r) + ")");
+            return reinterpret_cast<std::uint64_t>(surface);
+        },
+        std::max(1, fbWidth_), std::max(1, fbHeight_), args_.vsync));
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // panel layout is not persisted
+    ImGui::StyleColorsDark();
+    input_.install(window_);  // first, so that ImGui's backend forwards events to it
+    ImGui_ImplGlfw_InitForVulkan(window_, true);
+    overlay_ = std::make_shared<m3g::vk::ImGuiOverlay>();
+    target_->setOverlay(overlay_);
+    state_.showUi = !args_.noUi;
+    state_.timeMs = args_.time;
+
+    int rc = 0;
+    try {
+        if (!args_.file.empty()) open(args_.file);
+        else if (!settings_.lastFile.empty() && args_.frames < 0 && args_.script.empty()) open(settings_.lastFile);
+        if (!args_.script.empty()) {
+            Script script = Script::load(args_.script);
+            rc = script.run([&](const ScriptCommand& c) { return input_.apply(c, [&] { frame(); },
+                                                                               [&](const std::string& p, bool ui) { saveScreenshot(p, ui); },
+                                                                               fbWidth_, fbHeight_); });
+        } else if (args_.frames > 0) {
+            for (int i = 0; i + 1 < args_.frames; ++i) frame();
+            if (!args_.screenshot.empty()) saveScreenshot(args_.screenshot);
+            else frame();
+        } else {
+            while (!glfwWindowShouldClose(window_) && !state_.quit) {
+                glfwPollEvents();
+                if (!state_.openRequest.empty()) {
+                    open(state_.openRequest);
+                    state_.openRequest.clear();
+                }
+                if (auto dropped = input_.takeDrop()) open(*dropped);
+                if (state_.resetViewRequest && state_.scene) {
+                    state_.scene->resetView(fbWidth_, fbHeight_);
+                    state_.scene->useCamera(-1);
+                }
+                state_.resetViewRequest = false;
+                if (!state_.screenshotPath.empty()) {
+                    saveScreenshot(state_.screenshotPath);
+                    state_.screenshotPath.clear();
+                    continue;
+                }
+                frame();
+            }
+            int w = 0, h = 0;
+            glfwGetWindowSize(window_, &w, &h);
+            settings_.width = w;
+            settings_.height = h;
+        }
+        if (!state_.error.empty() && (args_.frames > 0 || !args_.script.empty())) rc = 1;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "m3g: view: %s\n", e.what());
+        rc = 1;
+    }
+    m3g::Graphics3D::getInstance()->releaseTarget();
+    target_->setOverlay(nullptr);
+    overlay_.reset();
+    target_ = nullptr;  // the swapchain and surface go before the window
+    m3g::Graphics3D::getInstance()->releaseRenderer();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    glfwDestroyWindow(window_);
+    glfwTerminate();
+    if (m3g::vk::validationEnabled()) {
+        std::fprintf(stderr, "m3g: view: validation messages: %llu\n",
+                     static_cast<unsigned long long>(m3g::vk::validationMessageCount()));
+        if (m3g::vk::validationMessageCount() != 0 && rc == 0) rc = 3;
+    }
+    return rc;
+}
+
+}  // namespace
+
+int cmdView(std::span<const std::string_view> argv) {
+    ViewArgs args;
+    try {
+        args = parse(argv);
+    } catch (const CliError& e) {
+        std::fprintf(stderr, "m3g: %s\n", e.what());
+        return 2;
+    }
+    if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY")) {
+        std::fprintf(stderr, "m3g: view: no display (DISPLAY/WAYLAND_DISPLAY unset); use `m3g render` headless, or "
+                             "xvfb-run m3g view ...\n");
+        return 1;
+    }
+    Settings settings = Settings::load();
+    ViewerApp app(args, settings);
+    const int rc = app.run();
+    if (args.frames < 0 && args.script.empty()) settings.save();
+    return rc;
+}
+
+}  // namespace m3gcli

@@ -1,0 +1,41 @@
+#include <m3g/vk/WindowTarget.h>
+
+#include <m3g/Graphics3D.h>
+
+#include "Check.h"
+#include "Swapchain.h"
+
+namespace m3g::vk {
+
+WindowTarget::WindowTarget(SurfaceFactory createSurface, int width, int height, bool vsync)
+    : Graphics(width, height), createSurface_(std::move(createSurface)), vsync_(vsync) {
+    if (!createSurface_) throw NullPointerException("m3g::vk::WindowTarget: the surface factory is empty");
+}
+
+WindowTarget::~WindowTarget() = default;
+
+void WindowTarget::resize(int width, int height) {
+    if (Graphics3D::getInstance()->targetGraphics() == this)
+        throw IllegalStateException("m3g::vk::WindowTarget::resize: the target is bound to Graphics3D; resize "
+                                    "between releaseTarget and the next bindTarget");
+    if (width == getWidth() && height == getHeight()) return;
+    resizeSurface(width, height);
+    fresh_ = true;
+    readbackReady_ = false;
+}
+
+void WindowTarget::setOverlay(std::shared_ptr<WindowOverlay> overlay) { overlay_ = std::move(overlay); }
+
+Swapchain& WindowTarget::swapchain() {
+    if (!swapchain_) swapchain_ = std::make_unique<Swapchain>(Context::get(), createSurface_(Context::get().instance()), vsync_);
+    return *swapchain_;
+}
+
+bool WindowTarget::takeReadbackRequest() noexcept {
+    const bool r = readbackRequested_;
+    readbackRequested_ = false;
+    if (r) readbackReady_ = false;
+    return r;
+}
+
+}  // namespace m3g::vk
