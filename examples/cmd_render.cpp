@@ -60,9 +60,11 @@ RgbaImage renderToFiles(const m3g::LoadResult& loaded, const RenderOptions& o, c
             if (!parent.empty()) fs::create_directories(parent);
         }
         writePng(path, image, keepAlpha);
-        if (log && path != "-")
-            std::fprintf(log, "m3g: wrote %s (%dx%d, t = %d ms%s)\n", path.c_str(), o.width, o.height, time,
-                         orbit ? (", orbit " + std::to_string(360.0 * k / count) + " deg").c_str() : "");
+        if (log && path != "-") {
+            char orbitNote[48] = "";
+            if (orbit) std::snprintf(orbitNote, sizeof orbitNote, ", orbit %.1f deg", 360.0 * k / count);
+            std::fprintf(log, "m3g: wrote %s (%dx%d, t = %d ms%s)\n", path.c_str(), o.width, o.height, time, orbitNote);
+        }
     }
     return image;
 }

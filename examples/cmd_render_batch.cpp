@@ -131,7 +131,10 @@ int renderBatch(const RenderOptions& o) {
             std::fprintf(stderr, "m3g: render: %s (batch stopped at %s)\n", e.what(), item.label.c_str());
             return 1;
         } catch (const std::exception& e) {
-            failures.push_back({item.label, e.what()});
+            // Loader messages already start with the file's name.
+            std::string reason = e.what();
+            if (reason.rfind(item.label + ": ", 0) == 0) reason.erase(0, item.label.size() + 2);
+            failures.push_back({item.label, reason});
         }
     }
     bar.show(static_cast<int>(items.size()), "");
