@@ -18,10 +18,11 @@ namespace {
 
 unzFile handle(void* p) { return static_cast<unzFile>(p); }
 
+/// `suffix` in lower case.
 bool endsWithNoCase(const std::string& s, std::string_view suffix) {
     if (s.size() < suffix.size()) return false;
     return std::equal(suffix.begin(), suffix.end(), s.end() - static_cast<std::ptrdiff_t>(suffix.size()),
-                      [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; });
+                      [](char lower, char c) { return std::tolower(static_cast<unsigned char>(c)) == lower; });
 }
 
 /// An entry name that stays inside a folder it is extracted to: relative,

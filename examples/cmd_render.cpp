@@ -104,7 +104,10 @@ int cmdRender(std::span<const std::string_view> argv) {
         std::fprintf(stderr, "m3g: %s\n", e.what());
         return 1;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "m3g: %s: %s\n", o.input.c_str(), e.what());
+        // Loader messages already start with the file's name.
+        const std::string message = e.what();
+        if (message.rfind(o.input + ": ", 0) == 0) std::fprintf(stderr, "m3g: %s\n", message.c_str());
+        else std::fprintf(stderr, "m3g: %s: %s\n", o.input.c_str(), message.c_str());
         return 1;
     }
 }
