@@ -137,6 +137,11 @@ void JarArchive::extractAll() const {
     if (!mkdtemp(pattern.data())) throw JarError(path_ + ": cannot create a temporary folder to extract into");
     const fs::path dir = pattern;
     try {
+        std::uint64_t total = 0;
+        for (const Entry& e : entries_) total += e.size;
+        if (total > kMaxExtractBytes)
+            throw JarError(path_ + ": entries total " + std::to_string(total) + " bytes, over the extraction limit of " +
+                           std::to_string(kMaxExtractBytes));
         for (const Entry& e : entries_) {
             if (!safeEntryName(e.name)) continue;  // could not be referenced from inside anyway
             const fs::path target = dir / fs::path(e.name);

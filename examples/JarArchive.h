@@ -34,6 +34,8 @@ public:
     /// Largest entry read() accepts (a hostile size field cannot make it
     /// allocate more).
     static constexpr std::uint64_t kMaxEntryBytes = 256ull << 20;
+    /// Largest total of entry sizes load() extracts.
+    static constexpr std::uint64_t kMaxExtractBytes = 1ull << 30;
 
     /// Opens `path` and reads its central directory. Throws JarError when the
     /// file is missing or is not a readable zip archive.
