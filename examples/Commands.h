@@ -7,7 +7,11 @@
 
 namespace m3gcli {
 
-/// m3g render FILE -o OUT.png [--size WxH] [--time MS] [--align] [--lenient]
+/// m3g render FILE|DIR|GAME.jar -o OUT [--size WxH] [--time MS] [--align] [--lenient]
+///   [--frames N --fps F | --turntable N] [--camera-index I] [--background RRGGBBAA|transparent]
+///   [--reference REF.png [--threshold T] [--max-share S] [--min-psnr DB]]
+/// (options: RenderOptions.h). With --reference the status is the verdict:
+/// 0 within the limits, 1 not (or any failure).
 int cmdRender(std::span<const std::string_view> args);
 /// m3g compare A.png B.png [--threshold N] [--max-share S] [--min-psnr DB] [--diff OUT.png]
 int cmdCompare(std::span<const std::string_view> args);

@@ -88,6 +88,21 @@ Comparison compareImages(const RgbaImage& a, const RgbaImage& b, int threshold) 
     return c;
 }
 
+bool withinLimits(const Comparison& c, double maxShare, double minPsnr) {
+    return c.share <= maxShare && c.psnr >= minPsnr;
+}
+
+std::string comparisonReport(const Comparison& c, int threshold, double maxShare, double minPsnr) {
+    char buf[512];
+    std::snprintf(buf, sizeof buf,
+                  "differing pixels (max channel diff > %d): %lld of %lld (%.3f%%)\n"
+                  "PSNR: %.2f dB\nlargest difference: %d\n"
+                  "%s (limits: share <= %.3f%%, PSNR >= %.1f dB)\n",
+                  threshold, c.differing, c.total, 100.0 * c.share, c.psnr, c.maxDifference,
+                  withinLimits(c, maxShare, minPsnr) ? "PASS" : "FAIL", 100.0 * maxShare, minPsnr);
+    return buf;
+}
+
 RgbaImage diffImage(const RgbaImage& a, const RgbaImage& b, int threshold) {
     RgbaImage out = a;
     const std::size_t n = static_cast<std::size_t>(a.width) * a.height;

@@ -38,6 +38,12 @@ struct Comparison {
 /// Compares RGB channels of two images of the same size (throws
 /// std::invalid_argument otherwise).
 Comparison compareImages(const RgbaImage& a, const RgbaImage& b, int threshold);
+/// The verdict of `m3g compare`: share <= maxShare and psnr >= minPsnr.
+bool withinLimits(const Comparison& c, double maxShare, double minPsnr);
+/// The report of `m3g compare` (several lines, ends with a newline):
+/// differing pixels, PSNR, largest difference, then PASS or FAIL with the limits.
+std::string comparisonReport(const Comparison& c, int threshold, double maxShare, double minPsnr);
+
 /// A diff image: grey copy of `a`, differing pixels in red with brightness
 /// by difference.
 RgbaImage diffImage(const RgbaImage& a, const RgbaImage& b, int threshold);

@@ -10,6 +10,37 @@ using namespace m3g;
 
 namespace {
 
+/// A 32x32 checkerboard in two colours (RGB).
+Ref<Image2D> checker() {
+    std::vector<std::uint8_t> px(32 * 32 * 3);
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 32; ++x) {
+            const bool on = ((x / 8) + (y / 8)) % 2 == 0;
+            const std::uint8_t c[3] = {static_cast<std::uint8_t>(on ? 240 : 40), static_cast<std::uint8_t>(on ? 200 : 90),
+                                       static_cast<std::uint8_t>(on ? 60 : 160)};
+            for (int k = 0; k < 3; ++k) px[(y * 32 + x) * 3 + k] = c[k];
+        }
+    return Ref<Image2D>(new Image2D(Image2D::RGB, 32, 32, px));
+}
+
+/// A round, soft-edged spot of light (RGBA) for the sprite.
+Ref<Image2D> glow() {
+    std::vector<std::uint8_t> px(16 * 16 * 4);
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) {
+            const float dx = (static_cast<float>(x) - 7.5f) / 7.5f, dy = (static_cast<float>(y) - 7.5f) / 7.5f;
+            const float a = std::max(0.0f, 1.0f - std::sqrt(dx * dx + dy * dy));
+            std::uint8_t* p = &px[(y * 16 + x) * 4];
+            p[0] = 255;
+            p[1] = 230;
+            p[2] = 140;
+            p[3] = static_cast<std::uint8_t>(255.0f * a);
+        }
+    return Ref<Image2D>(new Image2D(Image2D::RGBA, 16, 16, px));
+}
+
+}  // namespace
+
 /// A unit cube (positions as shorts scaled by 1/64), normals per face,
 /// texture coordinates 0..1, six strips of four vertices.
 Ref<Mesh> makeCube(Appearance* appearance) {
@@ -43,35 +74,6 @@ Ref<Mesh> makeCube(Appearance* appearance) {
     const int lengths[6] = {4, 4, 4, 4, 4, 4};
     Ref<IndexBuffer> strips(new TriangleStripArray(0, lengths));
     return Ref<Mesh>(new Mesh(vb.get(), strips.get(), appearance));
-}
-
-/// A 32x32 checkerboard in two colours (RGB).
-Ref<Image2D> checker() {
-    std::vector<std::uint8_t> px(32 * 32 * 3);
-    for (int y = 0; y < 32; ++y)
-        for (int x = 0; x < 32; ++x) {
-            const bool on = ((x / 8) + (y / 8)) % 2 == 0;
-            const std::uint8_t c[3] = {static_cast<std::uint8_t>(on ? 240 : 40), static_cast<std::uint8_t>(on ? 200 : 90),
-                                       static_cast<std::uint8_t>(on ? 60 : 160)};
-            for (int k = 0; k < 3; ++k) px[(y * 32 + x) * 3 + k] = c[k];
-        }
-    return Ref<Image2D>(new Image2D(Image2D::RGB, 32, 32, px));
-}
-
-/// A round, soft-edged spot of light (RGBA) for the sprite.
-Ref<Image2D> glow() {
-    std::vector<std::uint8_t> px(16 * 16 * 4);
-    for (int y = 0; y < 16; ++y)
-        for (int x = 0; x < 16; ++x) {
-            const float dx = (static_cast<float>(x) - 7.5f) / 7.5f, dy = (static_cast<float>(y) - 7.5f) / 7.5f;
-            const float a = std::max(0.0f, 1.0f - std::sqrt(dx * dx + dy * dy));
-            std::uint8_t* p = &px[(y * 16 + x) * 4];
-            p[0] = 255;
-            p[1] = 230;
-            p[2] = 140;
-            p[3] = static_cast<std::uint8_t>(255.0f * a);
-        }
-    return Ref<Image2D>(new Image2D(Image2D::RGBA, 16, 16, px));
 }
 
 /// A flat ground grid of 8x8 quads with per-vertex colours, unlit.
@@ -111,8 +113,6 @@ Ref<Mesh> makeGround() {
     app->setPolygonMode(pm.get());
     return Ref<Mesh>(new Mesh(vb.get(), strips.get(), app.get()));
 }
-
-}  // namespace
 
 Ref<World> buildSampleScene() {
     Ref<World> world(new World());

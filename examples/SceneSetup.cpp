@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace m3gcli {
 
@@ -143,6 +144,32 @@ PreparedScene prepareScene(const LoadResult& loaded, int width, int height) {
         }
     }
     return s;
+}
+
+std::vector<Camera*> camerasInFileOrder(const LoadResult& loaded) {
+    std::vector<Camera*> out;
+    for (const auto& o : loaded.objects)
+        if (auto* c = dynamic_cast<Camera*>(o.get())) out.push_back(c);
+    return out;
+}
+
+void useCamera(PreparedScene& scene, const LoadResult& loaded, int index) {
+    const std::vector<Camera*> cameras = camerasInFileOrder(loaded);
+    if (index < 0 || static_cast<std::size_t>(index) >= cameras.size())
+        throw std::out_of_range("camera index " + std::to_string(index) + " out of range: the file has " +
+                                std::to_string(cameras.size()) + " Camera(s)");
+    Camera* camera = cameras[static_cast<std::size_t>(index)];
+    World& world = *scene.world;
+    if (camera->root() != &world) {
+        if (camera->getParent())
+            throw std::invalid_argument("Camera " + std::to_string(index) +
+                                        " belongs to a scene graph other than the rendered World");
+        world.addChild(camera);
+        scene.cameraFixup = true;
+        scene.notes.push_back("Camera " + std::to_string(index) + " is not in the World: added it to the World");
+    }
+    world.setActiveCamera(camera);
+    scene.notes.push_back("rendering through Camera " + std::to_string(index) + " of " + std::to_string(cameras.size()));
 }
 
 }  // namespace m3gcli

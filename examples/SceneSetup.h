@@ -28,6 +28,15 @@ struct PreparedScene {
 /// Builds the World for `loaded` at a target of width x height pixels.
 PreparedScene prepareScene(const m3g::LoadResult& loaded, int width, int height);
 
+/// The Cameras of a load, in file order (what `--camera-index` counts).
+std::vector<m3g::Camera*> camerasInFileOrder(const m3g::LoadResult& loaded);
+
+/// Makes the `index`-th Camera of the file (camerasInFileOrder) the World's
+/// active camera, adding it to the World when it has no parent (as the
+/// camera fix-up does). Throws std::out_of_range naming the number of
+/// Cameras, std::invalid_argument when the Camera sits in another tree.
+void useCamera(PreparedScene& scene, const m3g::LoadResult& loaded, int index);
+
 /// Bounding box rule of REFERENCE.md step 2 (stored transforms, rest poses):
 /// centre and radius; no vertex gives (0,0,0) and 1.
 void sceneBounds(m3g::World& world, std::array<float, 3>& center, float& radius);

@@ -50,12 +50,9 @@ int cmdCompare(std::span<const std::string_view> args) {
     try {
         const RgbaImage ia = readPng(a), ib = readPng(b);
         const Comparison c = compareImages(ia, ib, threshold);
-        std::printf("differing pixels (max channel diff > %d): %lld of %lld (%.3f%%)\n", threshold, c.differing, c.total,
-                    100.0 * c.share);
-        std::printf("PSNR: %.2f dB\nlargest difference: %d\n", c.psnr, c.maxDifference);
+        std::printf("%s", comparisonReport(c, threshold, maxShare, minPsnr).c_str());
         if (!diff.empty()) writePng(diff, diffImage(ia, ib, threshold), false);
-        const bool pass = c.share <= maxShare && c.psnr >= minPsnr;
-        std::printf("%s (limits: share <= %.3f%%, PSNR >= %.1f dB)\n", pass ? "PASS" : "FAIL", 100.0 * maxShare, minPsnr);
+        const bool pass = withinLimits(c, maxShare, minPsnr);
         return pass ? 0 : 1;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "m3g: compare: %s\n", e.what());

@@ -1,6 +1,10 @@
-// m3g render: load, animate, optionally align, render the World to a PNG
-// (with the auto-framing and camera fix-up of ../shared/corpus/REFERENCE.md).
+// m3g render: load, animate, optionally align, render the World to PNGs
+// (with the auto-framing and camera fix-up of ../shared/corpus/REFERENCE.md):
+// one image, an animation sequence, a turntable, a comparison with a
+// reference image, or a batch over a folder or a J2ME .jar.
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -10,96 +14,100 @@
 #include "CliArgs.h"
 #include "Commands.h"
 #include "ImageIO.h"
+#include "JarArchive.h"
+#include "RenderRun.h"
+#include "SceneRender.h"
 #include "SceneSetup.h"
 
 namespace m3gcli {
 
-namespace {
+namespace fs = std::filesystem;
 
-struct RenderArgs {
-    std::string file, output;
-    int width = 320, height = 240;
-    int time = 0;
-    bool align = false, lenient = false;
-};
+RgbaImage renderToFiles(const m3g::LoadResult& loaded, const RenderOptions& o, const std::string& output,
+                        std::FILE* log) {
+    PreparedScene scene = prepareScene(loaded, o.width, o.height);
+    if (o.cameraIndex) useCamera(scene, loaded, *o.cameraIndex);
+    if (log)
+        for (const auto& n : scene.notes) std::fprintf(log, "m3g: %s\n", n.c_str());
+    m3g::World& world = *scene.world;
+    if (o.background) overrideBackground(world, *o.background);
+    const bool keepAlpha = o.background.has_value();
+    const int count = o.imageCount();
 
-bool parseSize(std::string_view text, int& w, int& h) {
-    const auto x = text.find('x');
-    if (x == std::string_view::npos) return false;
-    auto a = parseInt(text.substr(0, x)), b = parseInt(text.substr(x + 1));
-    if (!a || !b || *a <= 0 || *b <= 0) return false;
-    w = *a;
-    h = *b;
-    return true;
-}
-
-RenderArgs parse(std::span<const std::string_view> args) {
-    RenderArgs r;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string_view a = args[i];
-        auto value = [&](const char* name) -> std::string_view {
-            if (i + 1 >= args.size()) throw CliError(std::string("render: ") + name + " needs a value");
-            return args[++i];
-        };
-        if (a == "-o" || a == "--output") r.output = value("-o");
-        else if (a == "--size") {
-            if (!parseSize(value("--size"), r.width, r.height)) throw CliError("render: --size takes WxH, e.g. 320x240");
-        } else if (a == "--time") {
-            auto t = parseInt(value("--time"));
-            if (!t) throw CliError("render: --time takes an integer number of milliseconds");
-            r.time = *t;
-        } else if (a == "--align") r.align = true;
-        else if (a == "--lenient") r.lenient = true;
-        else if (!a.empty() && a[0] == '-' && a != "-") throw CliError("render: unknown option " + std::string(a));
-        else if (r.file.empty()) r.file = a;
-        else throw CliError("render: unexpected operand " + std::string(a));
+    std::optional<CameraOrbit> orbit;
+    if (o.turntable > 0) {
+        world.animate(o.time);
+        if (o.align) world.align(nullptr);
+        std::array<float, 3> center = scene.center;
+        float radius = scene.radius;
+        if (!scene.autoFramed) sceneBounds(world, center, radius);
+        orbit.emplace(*world.getActiveCamera(), world, center);
     }
-    if (r.file.empty()) throw CliError("render: no input file");
-    if (r.output.empty()) throw CliError("render: no output (-o OUT.png, or -o - for stdout)");
-    return r;
+    RgbaImage image;
+    for (int k = 0; k < count; ++k) {
+        int time = o.time;
+        if (orbit) {
+            orbit->setAngle(360.0f * static_cast<float>(k) / static_cast<float>(count));
+        } else {
+            time = o.time + static_cast<int>(std::lround(static_cast<double>(k) * 1000.0 / o.fps));
+            world.animate(time);
+            if (o.align) world.align(nullptr);
+        }
+        image = renderWorldImage(world, o.width, o.height, keepAlpha);
+        const std::string path = o.sequence() ? frameFileName(output, k, count) : output;
+        if (path != "-") {
+            const fs::path parent = fs::path(path).parent_path();
+            if (!parent.empty()) fs::create_directories(parent);
+        }
+        writePng(path, image, keepAlpha);
+        if (log && path != "-") {
+            char orbitNote[48] = "";
+            if (orbit) std::snprintf(orbitNote, sizeof orbitNote, ", orbit %.1f deg", 360.0 * k / count);
+            std::fprintf(log, "m3g: wrote %s (%dx%d, t = %d ms%s)\n", path.c_str(), o.width, o.height, time, orbitNote);
+        }
+    }
+    return image;
 }
-
-}  // namespace
 
 int cmdRender(std::span<const std::string_view> argv) {
-    RenderArgs args;
+    RenderOptions o;
+    bool batch = false;
     try {
-        args = parse(argv);
+        o = parseRenderOptions(argv);
+        std::error_code ec;
+        batch = fs::is_directory(o.input, ec) || (fs::is_regular_file(o.input, ec) && JarArchive::looksLikeZip(o.input));
+        if (batch && o.output.empty()) throw CliError("render: batch mode needs an output folder (-o OUTDIR)");
+        if (batch && !o.reference.empty()) throw CliError("render: --reference compares one image, not a batch");
+        if (batch && o.output == "-") throw CliError("render: batch mode writes files, not stdout");
+        if (o.output.empty()) {
+            if (!o.sequence()) throw CliError("render: no output (-o OUT.png, or -o - for stdout)");
+            o.output = "out_{frame}.png";
+        }
     } catch (const CliError& e) {
         std::fprintf(stderr, "m3g: %s\n", e.what());
         return 2;
     }
+    if (batch) return renderBatch(o);
     try {
         m3g::LoaderOptions options;
-        options.lenient = args.lenient;
-        const m3g::LoadResult loaded = m3g::Loader::loadDetailed(args.file, options);
+        options.lenient = o.lenient;
+        const m3g::LoadResult loaded = m3g::Loader::loadDetailed(o.input, options);
         for (const auto& w : loaded.warnings) std::fprintf(stderr, "m3g: warning: %s\n", w.c_str());
-        PreparedScene scene = prepareScene(loaded, args.width, args.height);
-        for (const auto& n : scene.notes) std::fprintf(stderr, "m3g: %s\n", n.c_str());
-        scene.world->animate(args.time);
-        if (args.align) scene.world->align(nullptr);
-
-        // A Graphics surface, as a MIDlet renders (and as the reference images
-        // were made): background images must then be RGB.
-        m3g::Ref<m3g::Graphics> target(new m3g::Graphics(args.width, args.height));
-        m3g::Graphics3D* g = m3g::Graphics3D::getInstance();
-        g->bindTarget(target.get(), true, 0);
-        try {
-            g->setViewport(0, 0, args.width, args.height);
-            g->render(scene.world.get());
-        } catch (...) {
-            g->releaseTarget();
-            throw;
-        }
-        g->releaseTarget();
-        writePng(args.output, fromGraphics(*target), false);
-        if (args.output != "-") std::fprintf(stderr, "m3g: wrote %s (%dx%d, t = %d ms)\n", args.output.c_str(), args.width, args.height, args.time);
-        return 0;
+        const RgbaImage image = renderToFiles(loaded, o, o.output, stderr);
+        if (o.reference.empty()) return 0;
+        // The exit status is the verdict, as `m3g compare` gives it.
+        const Comparison c = compareImages(image, readPng(o.reference), o.threshold);
+        std::FILE* report = o.output == "-" ? stderr : stdout;
+        std::fprintf(report, "%s", comparisonReport(c, o.threshold, o.maxShare, o.minPsnr).c_str());
+        return withinLimits(c, o.maxShare, o.minPsnr) ? 0 : 1;
     } catch (const m3g::vk::VulkanError& e) {
         std::fprintf(stderr, "m3g: %s\n", e.what());
         return 1;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "m3g: %s: %s\n", args.file.c_str(), e.what());
+        // Loader messages already start with the file's name.
+        const std::string message = e.what();
+        if (message.rfind(o.input + ": ", 0) == 0) std::fprintf(stderr, "m3g: %s\n", message.c_str());
+        else std::fprintf(stderr, "m3g: %s: %s\n", o.input.c_str(), message.c_str());
         return 1;
     }
 }

@@ -7,7 +7,11 @@
 //                                 load and re-save as M3G 1.0
 //   m3g render FILE -o OUT.png [--size WxH] [--time MS] [--align] [--lenient]
 //                                 render the World (auto-framed if it has no
-//                                 camera) to a PNG; -o - writes to stdout
+//                                 camera) to a PNG; -o - writes to stdout;
+//                                 [--frames N --fps F] [--turntable N]
+//                                 [--camera-index I] [--background RRGGBBAA]
+//                                 [--reference REF.png --threshold T]
+//   m3g render DIR|GAME.jar -o OUTDIR  every .m3g of a folder or .jar
 //   m3g compare A.png B.png [--threshold N] [--max-share S] [--min-psnr DB] [--diff OUT.png]
 //                                 share of pixels off by more than N, PSNR;
 //                                 exit status 0 = within the limits

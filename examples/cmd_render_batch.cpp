@@ -1,0 +1,151 @@
+// Batch mode of m3g render: every .m3g of a folder or of a J2ME .jar, with a
+// progress bar on a terminal and a summary of what failed and why.
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include <m3g/m3g.h>
+#include <m3g/vk/Vulkan.h>
+
+#include "JarArchive.h"
+#include "RenderRun.h"
+
+namespace m3gcli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct BatchItem {
+    std::string label;   ///< path shown in the progress bar and summary
+    fs::path relative;   ///< output path under OUTDIR, before ".png"
+    std::function<m3g::LoadResult(const m3g::LoaderOptions&)> load;
+};
+
+bool isM3gName(const std::string& name) {
+    if (name.size() < 4) return false;
+    std::string ext = name.substr(name.size() - 4);
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext == ".m3g";
+}
+
+/// One line redrawn in place on a terminal: [#####-----] 12/40 name.
+class ProgressBar {
+public:
+    explicit ProgressBar(int total) : total_(total), enabled_(isatty(fileno(stderr)) != 0) {}
+    void show(int done, const std::string& label) {
+        if (!enabled_) return;
+        constexpr int kWidth = 30;
+        const int filled = total_ > 0 ? kWidth * done / total_ : kWidth;
+        std::string name = label;
+        if (name.size() > 40) name = "..." + name.substr(name.size() - 37);
+        std::fprintf(stderr, "\r[%s%s] %d/%d %-40s", std::string(static_cast<std::size_t>(filled), '#').c_str(),
+                     std::string(static_cast<std::size_t>(kWidth - filled), '-').c_str(), done, total_, name.c_str());
+        std::fflush(stderr);
+    }
+    void finish() {
+        if (enabled_) std::fprintf(stderr, "\r%*s\r", 90, "");
+    }
+
+private:
+    int total_;
+    bool enabled_;
+};
+
+std::vector<BatchItem> folderItems(const fs::path& dir) {
+    std::vector<fs::path> files;
+    for (const auto& e : fs::recursive_directory_iterator(dir, fs::directory_options::skip_permission_denied))
+        if (e.is_regular_file() && isM3gName(e.path().filename().string())) files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    std::vector<BatchItem> items;
+    for (const fs::path& f : files) {
+        BatchItem item;
+        item.label = f.string();
+        item.relative = fs::relative(f, dir).replace_extension();
+        item.load = [f](const m3g::LoaderOptions& options) { return m3g::Loader::loadDetailed(f.string(), options); };
+        items.push_back(std::move(item));
+    }
+    return items;
+}
+
+std::vector<BatchItem> jarItems(const std::shared_ptr<JarArchive>& jar) {
+    std::vector<BatchItem> items;
+    for (const std::string& name : jar->m3gEntries()) {
+        BatchItem item;
+        item.label = jar->path() + "!/" + name;
+        // Entry names that leave the folder fail in load() before this is used.
+        item.relative = fs::path(name).replace_extension();
+        item.load = [jar, name](const m3g::LoaderOptions& options) { return jar->load(name, options); };
+        items.push_back(std::move(item));
+    }
+    return items;
+}
+
+}  // namespace
+
+int renderBatch(const RenderOptions& o) {
+    std::vector<BatchItem> items;
+    std::shared_ptr<JarArchive> jar;
+    try {
+        if (fs::is_directory(o.input)) {
+            items = folderItems(o.input);
+        } else {
+            jar = std::make_shared<JarArchive>(o.input);
+            items = jarItems(jar);
+        }
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "m3g: render: %s\n", e.what());
+        return 1;
+    }
+    if (items.empty()) {
+        std::fprintf(stderr, "m3g: render: no .m3g files in %s\n", o.input.c_str());
+        return 1;
+    }
+    m3g::LoaderOptions options;
+    options.lenient = o.lenient;
+    struct Failure {
+        std::string label, reason;
+    };
+    std::vector<Failure> failures;
+    int warned = 0;
+    ProgressBar bar(static_cast<int>(items.size()));
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        const BatchItem& item = items[i];
+        bar.show(static_cast<int>(i), item.label);
+        try {
+            const m3g::LoadResult loaded = item.load(options);
+            if (!loaded.warnings.empty()) ++warned;
+            fs::path out = fs::path(o.output) / item.relative;
+            out += o.sequence() ? "_{frame}.png" : ".png";
+            renderToFiles(loaded, o, out.string(), nullptr);
+        } catch (const m3g::vk::VulkanError& e) {
+            bar.finish();
+            // No device: every further file would fail the same way.
+            std::fprintf(stderr, "m3g: render: %s (batch stopped at %s)\n", e.what(), item.label.c_str());
+            return 1;
+        } catch (const std::exception& e) {
+            // Loader messages already start with the file's name.
+            std::string reason = e.what();
+            if (reason.rfind(item.label + ": ", 0) == 0) reason.erase(0, item.label.size() + 2);
+            failures.push_back({item.label, reason});
+        }
+    }
+    bar.show(static_cast<int>(items.size()), "");
+    bar.finish();
+    const std::size_t ok = items.size() - failures.size();
+    std::printf("rendered %zu file(s) from %s into %s: %zu ok, %zu failed", items.size(), o.input.c_str(),
+                o.output.c_str(), ok, failures.size());
+    if (warned) std::printf(" (%d with lenient-mode warnings)", warned);
+    std::printf("\n");
+    for (const Failure& f : failures) std::printf("  failed: %s: %s\n", f.label.c_str(), f.reason.c_str());
+    return failures.empty() ? 0 : 1;
+}
+
+}  // namespace m3gcli
