@@ -16,5 +16,7 @@ int cmdCompare(std::span<const std::string_view> args);
 int cmdBenchRender(std::span<const std::string_view> args);
 /// m3g sample -o OUT.m3g: writes the project's sample scene.
 int cmdSample(std::span<const std::string_view> args);
+/// m3g export FILE -o OUT.glb|OUT.gltf [--time MS] [--lenient] [--separate-bin] [--quiet]
+int cmdExport(std::span<const std::string_view> args);
 
 }  // namespace m3gcli
