@@ -593,6 +593,13 @@ ExportResult Exporter::run(std::span<m3g::Object3D* const> roots) {
     for (m3g::Object3D* o : all) {
         if (dynamic_cast<m3g::Background*>(o)) notes_.add("Background has no glTF equivalent (dropped)");
     }
+    if (nodes_.empty()) {
+        // Nothing to place in a scene (a texture library, a lone array): keep
+        // the images at least.
+        notes_.add("the file has no nodes: the glTF has no scene");
+        for (m3g::Object3D* o : all)
+            if (auto* image = dynamic_cast<m3g::Image2D*>(o)) materials_.image(*image);
+    }
     if (!scenes.empty()) doc_.json()["scene"] = 0;
     if (!nodes_.empty()) doc_.json()["nodes"] = nodes_;
     // Keep the top-level order readable: move extensions to the end.

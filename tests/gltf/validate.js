@@ -4,23 +4,38 @@
 // when there are no errors, 1 when there are, 2 when the validator or the
 // file cannot be loaded.
 //   node tests/gltf/validate.js [--verbose] FILE
-// The validator is looked up on NODE_PATH, then in build/tools/node_modules
-// (where scripts/setup installs it).
+//   node tests/gltf/validate.js --check      exit 0 when the validator loads
+// The validator is looked up in $M3G_GLTF_VALIDATOR (a package directory),
+// on NODE_PATH, then in build/tools/node_modules (where scripts/setup puts it).
 'use strict';
 const fs = require('fs');
 const path = require('path');
 
 function loadValidator() {
-  try {
-    return require('gltf-validator');
-  } catch (e) {
-    const local = path.resolve(__dirname, '..', '..', 'build', 'tools', 'node_modules', 'gltf-validator');
-    return require(local);
+  const candidates = [];
+  if (process.env.M3G_GLTF_VALIDATOR) candidates.push(process.env.M3G_GLTF_VALIDATOR);
+  candidates.push('gltf-validator');
+  candidates.push(path.resolve(__dirname, '..', '..', 'build', 'tools', 'node_modules', 'gltf-validator'));
+  for (const c of candidates) {
+    try {
+      return require(c);
+    } catch (e) {
+      // try the next place
+    }
   }
+  throw new Error('gltf-validator not found');
 }
 
 async function main() {
   const args = process.argv.slice(2);
+  if (args[0] === '--check') {  // is the validator installed? (exit status)
+    try {
+      loadValidator();
+      process.exit(0);
+    } catch (e) {
+      process.exit(2);
+    }
+  }
   const verbose = args.includes('--verbose');
   const file = args.filter((a) => a !== '--verbose')[0];
   if (!file) {
