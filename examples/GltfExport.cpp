@@ -475,6 +475,7 @@ void Exporter::exportAnimations(std::span<m3g::Object3D* const> all) {
         TimeMapping mapping;
         float weight;
         int outputs;  // components per output element
+        double activeStart = 0.0, activeEnd = 0.0;  // equal: always active
     };
     std::map<std::pair<int, std::string>, Channel> channels;  // one per (node, path)
     for (m3g::Object3D* o : all) {
@@ -509,12 +510,14 @@ void Exporter::exportAnimations(std::span<m3g::Object3D* const> all) {
                            ": no glTF equivalent, not exported");
                 continue;
             }
-            Channel ch{track, node, path, {}, controller->getWeight(), outputs};
+            Channel ch{track, node, path, {}, controller->getWeight(), outputs, 0.0, 0.0};
             ch.mapping.refWorldTime = controller->getRefWorldTime();
             ch.mapping.refSequenceTime = controller->getPosition(controller->getRefWorldTime());
             ch.mapping.speed = controller->getSpeed();
-            if (controller->getActiveIntervalStart() != controller->getActiveIntervalEnd())
-                notes_.add("AnimationController active intervals are not exported (tracks play throughout)");
+            if (controller->getActiveIntervalStart() != controller->getActiveIntervalEnd()) {
+                ch.activeStart = controller->getActiveIntervalStart();
+                ch.activeEnd = controller->getActiveIntervalEnd();
+            }
             const auto key = std::make_pair(node, path);
             const auto it = channels.find(key);
             if (it != channels.end()) {
@@ -533,6 +536,9 @@ void Exporter::exportAnimations(std::span<m3g::Object3D* const> all) {
     Json samplers = Json::array();
     Json channelList = Json::array();
     for (const auto& [key, ch] : channels) {
+        // An active interval covering the whole clip changes nothing.
+        if (ch.activeStart != ch.activeEnd && (ch.activeStart > 0.0 || ch.activeEnd < clipEnd))
+            notes_.add("AnimationController active intervals are not exported (tracks play throughout the clip)");
         SamplerKeys keys;
         try {
             keys = convertSequence(*ch.track->getKeyframeSequence(), ch.mapping, clipEnd, ch.path == "rotation");

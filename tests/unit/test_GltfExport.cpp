@@ -62,10 +62,11 @@ Json glbJson(const std::vector<std::uint8_t>& glb) {
 TEST(GltfGeometry, StripOfFourVerticesIsTwoTrianglesWithAlternatingWinding) {
     const int lengths[] = {4};
     Ref<TriangleStripArray> strip = new TriangleStripArray(0, lengths);
-    // Strip 0 1 2 3: (0 1 2) and, the second reversed to keep the winding, (2 1 3).
-    EXPECT_EQ(triangleList(*strip, false), (std::vector<std::uint32_t>{0, 1, 2, 2, 1, 3}));
+    // Strip 0 1 2 3: (0 1 2) and the odd triangle (1 2 3) with its last two
+    // indices swapped so that both wind the same way: (1 3 2).
+    EXPECT_EQ(triangleList(*strip, false), (std::vector<std::uint32_t>{0, 1, 2, 1, 3, 2}));
     // Flipped (WINDING_CW / CULL_FRONT): second and third index swapped.
-    EXPECT_EQ(triangleList(*strip, true), (std::vector<std::uint32_t>{0, 2, 1, 2, 3, 1}));
+    EXPECT_EQ(triangleList(*strip, true), (std::vector<std::uint32_t>{0, 2, 1, 1, 2, 3}));
 }
 
 TEST(GltfGeometry, PositionsAndTexCoordsGetScaleAndBias) {
