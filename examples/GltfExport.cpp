@@ -226,6 +226,7 @@ void Exporter::attachCamera(m3g::Camera& camera, int node) {
     } else {
         // GENERIC: read the OpenGL-style matrix back (symmetric frusta only).
         const auto& r = proj.rows();
+        bool decoded = true;
         if (r[12] == 0 && r[13] == 0 && r[14] == -1 && r[15] == 0 && r[0] != 0 && r[5] != 0) {
             yfov = 2.0 * std::atan(1.0 / r[5]);
             aspect = r[5] / r[0];
@@ -238,6 +239,7 @@ void Exporter::attachCamera(m3g::Camera& camera, int node) {
             znear = (r[11] + 1.0) / r[10];
             zfar = (r[11] - 1.0) / r[10];
         } else {
+            decoded = false;
             yfov = std::numbers::pi / 3.0;
             aspect = 1.0;
             znear = 0.1;
@@ -245,6 +247,8 @@ void Exporter::attachCamera(m3g::Camera& camera, int node) {
             notes_.add("a GENERIC camera matrix that is neither a perspective nor an orthographic projection: "
                        "exported as a 60 degree perspective camera");
         }
+        if (decoded)
+            notes_.add("a GENERIC camera: its matrix read back as a symmetric perspective or orthographic camera");
         if (r[2] != 0 || r[6] != 0 || r[3] != 0 || r[7] != 0)
             notes_.add("an off-centre GENERIC camera: glTF cameras are symmetric, the offset is dropped");
     }
