@@ -23,5 +23,7 @@ int cmdSample(std::span<const std::string_view> args);
 /// m3g view (examples/viewer/); without GLFW and ImGui at build time it
 /// says what to install.
 int cmdView(std::span<const std::string_view> args);
+/// m3g export FILE -o OUT.glb|OUT.gltf [--time MS] [--lenient] [--separate-bin] [--quiet]
+int cmdExport(std::span<const std::string_view> args);
 
 }  // namespace m3gcli

@@ -45,14 +45,16 @@ RgbaImage readPng(const std::string& path) {
     return out;
 }
 
-void writePng(const std::string& path, const RgbaImage& image, bool alpha) {
+namespace {
+
+/// A libpng simplified-API description of `image`; RGB8 data goes to `rgb`.
+png_image describe(const RgbaImage& image, bool alpha, std::vector<std::uint8_t>& rgb, const void*& data) {
     png_image img{};
     img.version = PNG_IMAGE_VERSION;
     img.width = static_cast<png_uint_32>(image.width);
     img.height = static_cast<png_uint_32>(image.height);
     img.format = PNG_FORMAT_RGBA;
-    std::vector<std::uint8_t> rgb;
-    const void* data = image.pixels.data();
+    data = image.pixels.data();
     if (!alpha) {
         img.format = PNG_FORMAT_RGB;
         rgb.resize(static_cast<std::size_t>(image.width) * image.height * 3);
@@ -60,9 +62,33 @@ void writePng(const std::string& path, const RgbaImage& image, bool alpha) {
             for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = image.pixels[i * 4 + c];
         data = rgb.data();
     }
+    return img;
+}
+
+}  // namespace
+
+void writePng(const std::string& path, const RgbaImage& image, bool alpha) {
+    std::vector<std::uint8_t> rgb;
+    const void* data = nullptr;
+    png_image img = describe(image, alpha, rgb, data);
     const bool ok = path == "-" ? png_image_write_to_stdio(&img, stdout, 0, data, 0, nullptr)
                                 : png_image_write_to_file(&img, path.c_str(), 0, data, 0, nullptr);
     if (!ok) throw std::runtime_error("cannot write PNG " + path + ": " + img.message);
+}
+
+std::vector<std::uint8_t> encodePng(const RgbaImage& image, bool alpha) {
+    std::vector<std::uint8_t> rgb;
+    const void* data = nullptr;
+    png_image img = describe(image, alpha, rgb, data);
+    png_alloc_size_t size = 0;
+    // First call measures, second writes.
+    if (!png_image_write_to_memory(&img, nullptr, &size, 0, data, 0, nullptr))
+        throw std::runtime_error(std::string("cannot encode PNG: ") + img.message);
+    std::vector<std::uint8_t> out(size);
+    if (!png_image_write_to_memory(&img, out.data(), &size, 0, data, 0, nullptr))
+        throw std::runtime_error(std::string("cannot encode PNG: ") + img.message);
+    out.resize(size);
+    return out;
 }
 
 Comparison compareImages(const RgbaImage& a, const RgbaImage& b, int threshold) {

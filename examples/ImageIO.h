@@ -26,6 +26,9 @@ RgbaImage fromGraphics(const m3g::Graphics& graphics);
 RgbaImage readPng(const std::string& path);
 /// Writes RGBA8 (or RGB8 when `alpha` is false) to `path`; "-" is stdout.
 void writePng(const std::string& path, const RgbaImage& image, bool alpha);
+/// The PNG file bytes of `image` (RGBA8, or RGB8 when `alpha` is false).
+/// Throws std::runtime_error when libpng fails.
+std::vector<std::uint8_t> encodePng(const RgbaImage& image, bool alpha);
 
 struct Comparison {
     long long differing = 0;  ///< pixels whose largest RGB difference exceeds the threshold

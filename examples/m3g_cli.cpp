@@ -16,6 +16,8 @@
 //                                 share of pixels off by more than N, PSNR;
 //                                 exit status 0 = within the limits
 //   m3g sample -o OUT.m3g         write the project's sample scene
+//   m3g export FILE -o OUT.glb|OUT.gltf [--time MS] [--lenient] [--separate-bin] [--quiet]
+//                                 glTF 2.0 export (docs/export.md)
 //   m3g pick FILE X Y [--time T] [--json] [--lenient]
 //                                 pick through the World's active camera
 //   m3g bench render FILE... [--size WxH] [--frames N]
@@ -127,6 +129,7 @@ int main(int argc, char** argv) {
         if (command == "compare") return m3gcli::cmdCompare(rest);
         if (command == "sample") return m3gcli::cmdSample(rest);
         if (command == "view") return m3gcli::cmdView(rest);
+        if (command == "export") return m3gcli::cmdExport(rest);
         if (command == "bench" && !rest.empty() && rest[0] == "render")
             return m3gcli::cmdBenchRender(std::span<const std::string_view>(rest).subspan(1));
         if (command == "bench") return m3gcli::benchCommand(argc - 2, argv + 2);

@@ -271,4 +271,52 @@ SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<flo
     return {0.0, 0.0};
 }
 
+void sampleKeyframeSlope(const KeyframeView& k, double time, bool fromLeft, std::span<float> out) {
+    const ValidKeys keys(k);
+    const int n = keys.count();
+    const int comps = k.components;
+    std::fill(out.begin(), out.begin() + comps, 0.0f);
+    if (n == 1) return;
+    if (k.interpolation != KeyframeSequence::SPLINE && k.interpolation != KeyframeSequence::LINEAR) return;
+
+    double s = time;
+    if (keys.loop()) {
+        const double d = k.duration;
+        s = std::fmod(s, d);
+        if (s < 0.0) s += d;
+        if (s < keys.time(0)) s += d;  // now in [t_first, t_first + D)
+        if (fromLeft && s == keys.time(0)) s += d;  // the wrap segment ends here
+    } else {
+        if (fromLeft ? s <= keys.time(0) : s < keys.time(0)) return;
+        if (fromLeft ? s > keys.time(n - 1) : s >= keys.time(n - 1)) return;
+    }
+    // The segment: the last key before s (from the left) or at/before s.
+    int lo = 0, hi = n - 1;
+    while (lo < hi) {
+        const int mid = (lo + hi + 1) / 2;
+        if (fromLeft ? keys.time(mid) < s : keys.time(mid) <= s)
+            lo = mid;
+        else
+            hi = mid - 1;
+    }
+    const int j = lo;
+    const int j1 = keys.next(j);
+    const double delta = keys.delta(j);
+    if (!(delta > 0.0)) return;
+    const double u = std::clamp((s - keys.time(j)) / delta, 0.0, 1.0);
+    const float* p0 = keys.value(j);
+    const float* p1 = keys.value(j1);
+    if (k.interpolation == KeyframeSequence::LINEAR) {
+        for (int c = 0; c < comps; ++c) out[c] = float((double(p1[c]) - p0[c]) / delta);
+        return;
+    }
+    // d/du of the Hermite basis, then d/ds = (d/du) / delta.
+    const double d00 = 6 * u * u - 6 * u, d01 = -6 * u * u + 6 * u;
+    const double d10 = 3 * u * u - 4 * u + 1, d11 = 3 * u * u - 2 * u;
+    const double sOut = keys.outScale(j), sIn = keys.inScale(j1);
+    for (int c = 0; c < comps; ++c)
+        out[c] = float((d00 * p0[c] + d01 * p1[c] + d10 * tangent(keys, j, c, sOut) + d11 * tangent(keys, j1, c, sIn)) /
+                       delta);
+}
+
 }  // namespace m3g::detail

@@ -45,4 +45,14 @@ struct SampleValidity {
 /// are unit length; SLERP does not flip to the shortest arc (Nokia).
 SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<float> out);
 
+/// The derivative of the sampled value with respect to sequence time at
+/// `time` (k.components floats into `out`) for a valid SPLINE or LINEAR
+/// view: from the segment that ends at `time` when `fromLeft`, else from the
+/// one that starts there (at a keyframe the incoming and outgoing Hermite
+/// tangents differ, spec digest §5.12). 0 where the value is held (before
+/// the first / after the last key of a CONSTANT sequence, one keyframe,
+/// zero-length segments) and for the other interpolations. Used to convert
+/// SPLINE tangents (glTF export).
+void sampleKeyframeSlope(const KeyframeView& k, double time, bool fromLeft, std::span<float> out);
+
 }  // namespace m3g::detail

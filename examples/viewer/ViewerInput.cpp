@@ -6,6 +6,8 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include "JarArchive.h"
+
 namespace m3gview {
 
 using namespace m3g;
@@ -196,7 +198,6 @@ int Input::apply(const ScriptCommand& c, const std::function<void()>& frame,
 }
 
 std::unique_ptr<ViewerScene> openScene(const std::string& request, int width, int height, ViewerState& state) {
-    state.jarEntries.clear();
     auto endsWith = [](const std::string& s, const char* suffix) {
         const std::string x(suffix);
         if (s.size() < x.size()) return false;
@@ -204,8 +205,24 @@ std::unique_ptr<ViewerScene> openScene(const std::string& request, int width, in
             if (std::tolower(static_cast<unsigned char>(s[s.size() - x.size() + i])) != x[i]) return false;
         return true;
     };
-    if (endsWith(request, ".jar") || request.find(".jar!") != std::string::npos)
-        throw std::runtime_error("opening game JARs needs the JAR reader (not built in this version)");
+    LoaderOptions options;
+    options.lenient = state.lenient;
+    // "game.jar!path/in/archive.m3g": one entry of a game archive.
+    if (const auto bang = request.find(".jar!"); bang != std::string::npos) {
+        const std::string jarPath = request.substr(0, bang + 4), entry = request.substr(bang + 5);
+        m3gcli::JarArchive jar(jarPath);
+        return std::make_unique<ViewerScene>(request, jar.load(entry, options), width, height);
+    }
+    state.jarEntries.clear();  // another file: its list goes
+    if (endsWith(request, ".jar")) {
+        m3gcli::JarArchive jar(request);
+        const std::vector<std::string> entries = jar.m3gEntries();
+        if (entries.empty()) throw std::runtime_error("the archive holds no .m3g file");
+        if (entries.size() == 1) return std::make_unique<ViewerScene>(request + "!" + entries[0], jar.load(entries[0], options), width, height);
+        state.jarPath = request;
+        state.jarEntries = entries;  // the Messages panel lists them
+        return nullptr;
+    }
     return std::make_unique<ViewerScene>(request, width, height, state.lenient);
 }
 

@@ -236,6 +236,7 @@ int ViewerApp::run() {
     overlay_ = std::make_shared<m3g::vk::ImGuiOverlay>();
     target_->setOverlay(overlay_);
     state_.showUi = !args_.noUi;
+    state_.lenient = args_.lenient;
     state_.timeMs = args_.time;
 
     int rc = 0;

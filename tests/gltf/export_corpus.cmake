@@ -1,0 +1,57 @@
+# Exports every .m3g file of the shared corpus with `m3g export` (lenient
+# load, .glb) and runs the Khronos glTF validator on each: the test fails on
+# any export failure or validator error. It prints "SKIPPED: ..." (the test's
+# SKIP_REGULAR_EXPRESSION) when node, the validator or the corpus is absent.
+#   cmake -DM3G=... -DNODE=... -DVALIDATE=tests/gltf/validate.js
+#         -DCORPUS=../shared/corpus -DOUT=build/gltf-out -P export_corpus.cmake
+if(NOT NODE OR NOT EXISTS "${NODE}")
+  message("SKIPPED: node not found; install nodejs to validate the glTF exports")
+  return()
+endif()
+set(ENV{M3G_GLTF_VALIDATOR} "${VALIDATOR_DIR}")
+execute_process(COMMAND "${NODE}" "${VALIDATE}" --check
+                RESULT_VARIABLE found OUTPUT_QUIET ERROR_QUIET)
+if(NOT found EQUAL 0)
+  message("SKIPPED: npm package gltf-validator not found (scripts/setup installs it into build/tools)")
+  return()
+endif()
+if(NOT EXISTS "${CORPUS}/models")
+  message("SKIPPED: shared corpus not found at ${CORPUS}/models")
+  return()
+endif()
+
+file(GLOB_RECURSE files "${CORPUS}/models/*.m3g")
+list(SORT files)
+file(MAKE_DIRECTORY "${OUT}")
+set(failures 0)
+set(count 0)
+foreach(f ${files})
+  math(EXPR count "${count} + 1")
+  file(RELATIVE_PATH rel "${CORPUS}/models" "${f}")
+  string(MAKE_C_IDENTIFIER "${rel}" name)
+  set(glb "${OUT}/${name}.glb")
+  execute_process(COMMAND "${M3G}" export "${f}" -o "${glb}" --lenient --quiet
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    math(EXPR failures "${failures} + 1")
+    message("FAIL export ${rel}: ${err}")
+    continue()
+  endif()
+  execute_process(COMMAND "${NODE}" "${VALIDATE}" "${glb}"
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE report ERROR_VARIABLE err)
+  string(REGEX MATCH "^errors [0-9]+ warnings [0-9]+" summary "${report}")
+  if(NOT rc EQUAL 0)
+    math(EXPR failures "${failures} + 1")
+    message("FAIL validate ${rel}: ${report}${err}")
+  else()
+    message("ok   ${summary}  ${rel}")
+  endif()
+endforeach()
+if(count EQUAL 0)
+  message("SKIPPED: no .m3g file under ${CORPUS}/models")
+  return()
+endif()
+if(failures GREATER 0)
+  message(FATAL_ERROR "${failures} of ${count} corpus exports failed or have validator errors")
+endif()
+message("all ${count} corpus exports pass the glTF validator with zero errors")
