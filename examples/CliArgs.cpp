@@ -84,6 +84,9 @@ std::string usageText() {
            "            camera at viewport point (X, Y), (0, 0) top left, (1, 1) bottom right\n"
            "  bench render FILE... [--size WxH] [--frames N]\n"
            "            rendering speed: first frame, ms per frame, fps, CPU per draw, pipelines\n"
+           "  bench soak FILE [--frames N] [--reload K] [--size WxH] [--report R] [--warmup C]\n"
+           "            memory over a long run, reloading FILE every K frames: resident and\n"
+           "            GPU memory per cycle and a verdict (flat after the warm-up or not)\n"
            "  version   print the library version\n"
            "  help      print this text\n";
 }
