@@ -5,6 +5,7 @@
 //
 //   m3g bench soak FILE [--frames N] [--reload K] [--size WxH] [--report R] [--warmup C]
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include <m3g/m3g.h>

@@ -1,5 +1,6 @@
 // Graphics3D state, properties and target binding rules (spec digest §4.26, §9).
 #include <gtest/gtest.h>
+
 #include <limits>
 #include <memory>
 

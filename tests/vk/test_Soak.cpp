@@ -1,5 +1,5 @@
 // The short soak (issue 8): an animated skinned corpus model loaded,
-// animated, rendered and dropped again every 60 frames with immediate-mode
+// animated, rendered and dropped again every 50 frames with immediate-mode
 // draws mixed in. After each reload the GPU mirrors (live buffers, live
 // textures, device memory) must come back to exactly the same values: every
 // mirror of a dropped scene is freed, nothing accumulates. Resident memory is
@@ -18,10 +18,10 @@ TEST_F(VkTest, SoakGpuMirrorsReturnToTheSameCountsAfterEachReload) {
     if (!std::filesystem::exists(file)) GTEST_SKIP() << "corpus file not found: " << file;
     m3gcli::SoakOptions o;
     o.file = file.string();
-    o.frames = 300;
-    o.reload = 60;
-    o.width = 64;
-    o.height = 48;
+    o.frames = 200;
+    o.reload = 50;
+    o.width = 48;
+    o.height = 36;
     o.warmupCycles = 1;
     const m3gcli::SoakResult r = m3gcli::runSoak(o, {});
     ASSERT_EQ(r.cycleEnds.size(), 5u);
