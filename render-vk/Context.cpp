@@ -1,5 +1,7 @@
 #include "Context.h"
 
+#include <dlfcn.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -90,11 +92,28 @@ std::string driverOverrides() {
     return out;
 }
 
+/// Opens the Vulkan loader and hands its vkGetInstanceProcAddr to volk; ""
+/// or what went wrong. Done here rather than by volkInitialize, which (in
+/// Debian 12's volk) calls through a null vkGetInstanceProcAddr when the
+/// library it opened does not export one.
+std::string openLoader() {
+    void* module = dlopen("libvulkan.so.1", RTLD_NOW | RTLD_LOCAL);
+    if (!module) module = dlopen("libvulkan.so", RTLD_NOW | RTLD_LOCAL);
+    if (!module) {
+        const char* why = dlerror();
+        return std::string("the Vulkan loader (libvulkan.so.1) is not installed") + (why ? std::string(" (") + why + ")" : "");
+    }
+    auto gipa = reinterpret_cast<PFN_vkGetInstanceProcAddr>(dlsym(module, "vkGetInstanceProcAddr"));
+    if (!gipa) return "the libvulkan.so.1 found does not export vkGetInstanceProcAddr: it is not a Vulkan loader";
+    volkInitializeCustom(gipa);
+    if (!vkCreateInstance || !vkEnumerateInstanceExtensionProperties)
+        return "the Vulkan loader (libvulkan.so.1) does not provide vkCreateInstance";
+    return {};
+}
+
 void loadLoader() {
-    static VkResult result = volkInitialize();
-    if (result != VK_SUCCESS)
-        throw VulkanError(std::string("m3g-vk: the Vulkan loader (libvulkan.so.1) could not be loaded or is not a "
-                                      "Vulkan loader (") + resultName(result) + "); " + kInstallHint);
+    static const std::string error = openLoader();
+    if (!error.empty()) throw VulkanError("m3g-vk: " + error + "; " + kInstallHint);
 }
 
 VkInstance createInstance(bool wantValidation, bool& validation) {
