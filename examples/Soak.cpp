@@ -109,13 +109,14 @@ SoakResult runSoak(const SoakOptions& o, const std::function<void(const SoakSamp
             sceneBounds(*world, center, radius);
         }
         world->animate(phase * kFrameMs);
-        Immediate a = makeImmediate(frame, center[0], center[1], center[2], radius * 0.1f);
+        // By phase, not frame: every cycle does the same work, so cycle ends compare exactly.
+        Immediate a = makeImmediate(phase, center[0], center[1], center[2], radius * 0.1f);
         g->bindTarget(target.get(), true, 0);
         try {
             g->render(world.get());
             // Immediate mode with the World's camera and lights, left by render(World).
             Transform spin;
-            spin.postRotate(static_cast<float>(frame % 360), 0, 0, 1);
+            spin.postRotate(static_cast<float>(phase % 360), 0, 0, 1);
             g->render(a.vertices.get(), a.triangles.get(), a.appearance.get(), &spin);
             g->render(a.vertices.get(), a.triangles.get(), a.appearance.get(), nullptr, 0);  // scope 0: not drawn
         } catch (...) {
