@@ -98,6 +98,9 @@ std::string usageText() {
            "       [--frames N --screenshot OUT.png] [--script FILE] [--no-vsync] [--no-headlight]\n"
            "            the desktop viewer (.m3g, .png or a game .jar; needs a display);\n"
            "            --frames/--screenshot/--script run it unattended (docs/viewer.md)\n"
+           "  bench soak FILE [--frames N] [--reload K] [--size WxH] [--report R] [--warmup C]\n"
+           "            memory over a long run, reloading FILE every K frames: resident and\n"
+           "            GPU memory per cycle and a verdict (flat after the warm-up or not)\n"
            "  version   print the library version\n"
            "  help      print this text\n";
 }

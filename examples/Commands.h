@@ -18,6 +18,8 @@ int cmdCompare(std::span<const std::string_view> args);
 
 /// m3g bench render FILE... [--size WxH] [--frames N]
 int cmdBenchRender(std::span<const std::string_view> args);
+/// m3g bench soak FILE [--frames N] [--reload K] [--size WxH] [--report R] [--warmup C]
+int cmdBenchSoak(std::span<const std::string_view> args);
 /// m3g sample -o OUT.m3g: writes the project's sample scene.
 int cmdSample(std::span<const std::string_view> args);
 /// m3g view (examples/viewer/); without GLFW and ImGui at build time it

@@ -107,8 +107,13 @@ int cmdBenchRender(std::span<const std::string_view> args) {
             std::printf("%-40s error: %s\n", file.c_str(), e.what());
         }
     }
-    const auto info = m3g::vk::currentDevice();
-    std::printf("device: %s (%s)\n", info.name.c_str(), info.type.c_str());
+    try {
+        const auto info = m3g::vk::currentDevice();
+        std::printf("device: %s (%s)\n", info.name.c_str(), info.type.c_str());
+    } catch (const m3g::vk::VulkanError& e) {
+        std::fprintf(stderr, "m3g: %s\n", e.what());
+        return 1;
+    }
     return 0;
 }
 

@@ -22,6 +22,8 @@
 //                                 pick through the World's active camera
 //   m3g bench render FILE... [--size WxH] [--frames N]
 //                                 rendering speed (first frame, fps, CPU per draw)
+//   m3g bench soak FILE [--frames N] [--reload K] [--size WxH] [--report R]
+//                                 memory over a long run with reloads (verdict)
 //   m3g version
 //   m3g bench skin|morph [...]  kernel benchmarks (examples/cmd_bench.cpp)
 // Exit status: 0 success, 1 load/save failure (the IOException message on
@@ -132,6 +134,8 @@ int main(int argc, char** argv) {
         if (command == "export") return m3gcli::cmdExport(rest);
         if (command == "bench" && !rest.empty() && rest[0] == "render")
             return m3gcli::cmdBenchRender(std::span<const std::string_view>(rest).subspan(1));
+        if (command == "bench" && !rest.empty() && rest[0] == "soak")
+            return m3gcli::cmdBenchSoak(std::span<const std::string_view>(rest).subspan(1));
         if (command == "bench") return m3gcli::benchCommand(argc - 2, argv + 2);
     }
     m3gcli::CliArgs args;

@@ -1,5 +1,7 @@
 #include "Context.h"
 
+#include <dlfcn.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -82,10 +84,36 @@ std::string lower(std::string s) {
     return s;
 }
 
+/// ", with VK_DRIVER_FILES=..." for the loader variables that choose drivers, or "".
+std::string driverOverrides() {
+    std::string out;
+    for (const char* name : {"VK_DRIVER_FILES", "VK_ICD_FILENAMES", "VK_ADD_DRIVER_FILES"})
+        if (const char* v = std::getenv(name); v && *v) out += std::string(out.empty() ? ", with " : " ") + name + "=" + v;
+    return out;
+}
+
+/// Opens the Vulkan loader and hands its vkGetInstanceProcAddr to volk; ""
+/// or what went wrong. Done here rather than by volkInitialize, which (in
+/// Debian 12's volk) calls through a null vkGetInstanceProcAddr when the
+/// library it opened does not export one.
+std::string openLoader() {
+    void* module = dlopen("libvulkan.so.1", RTLD_NOW | RTLD_LOCAL);
+    if (!module) module = dlopen("libvulkan.so", RTLD_NOW | RTLD_LOCAL);
+    if (!module) {
+        const char* why = dlerror();
+        return std::string("the Vulkan loader (libvulkan.so.1) is not installed") + (why ? std::string(" (") + why + ")" : "");
+    }
+    auto gipa = reinterpret_cast<PFN_vkGetInstanceProcAddr>(dlsym(module, "vkGetInstanceProcAddr"));
+    if (!gipa) return "the libvulkan.so.1 found does not export vkGetInstanceProcAddr: it is not a Vulkan loader";
+    volkInitializeCustom(gipa);
+    if (!vkCreateInstance || !vkEnumerateInstanceExtensionProperties)
+        return "the Vulkan loader (libvulkan.so.1) does not provide vkCreateInstance";
+    return {};
+}
+
 void loadLoader() {
-    static VkResult result = volkInitialize();
-    if (result != VK_SUCCESS)
-        throw VulkanError(std::string("m3g-vk: the Vulkan loader (libvulkan.so.1) could not be loaded; ") + kInstallHint);
+    static const std::string error = openLoader();
+    if (!error.empty()) throw VulkanError("m3g-vk: " + error + "; " + kInstallHint);
 }
 
 VkInstance createInstance(bool wantValidation, bool& validation) {
@@ -136,8 +164,13 @@ VkInstance createInstance(bool wantValidation, bool& validation) {
     ci.ppEnabledExtensionNames = extensions.data();
     VkInstance instance = VK_NULL_HANDLE;
     VkResult r = vkCreateInstance(&ci, nullptr, &instance);
+    if (r == VK_ERROR_INCOMPATIBLE_DRIVER)
+        // The loader's answer when it found no driver it could load.
+        throw VulkanError(std::string("m3g-vk: no usable Vulkan driver (ICD) was found (vkCreateInstance: "
+                                      "VK_ERROR_INCOMPATIBLE_DRIVER)") + driverOverrides() + "; " + kInstallHint);
     if (r != VK_SUCCESS)
-        throw VulkanError(std::string("m3g-vk: vkCreateInstance failed (") + resultName(r) + "); " + kInstallHint);
+        throw VulkanError(std::string("m3g-vk: vkCreateInstance failed (") + resultName(r) + ")" + driverOverrides() +
+                          "; " + kInstallHint);
     volkLoadInstance(instance);
     return instance;
 }
@@ -258,6 +291,8 @@ Context::Context() {
             vkGetPhysicalDeviceProperties(pd, &p);
             if (p.apiVersion >= VK_API_VERSION_1_3) usable.push_back(pd);
         }
+        if (devices.empty())
+            throw VulkanError("m3g-vk: the Vulkan loader reports no device" + driverOverrides() + "; " + kInstallHint);
         if (usable.empty())
             throw VulkanError(std::string("m3g-vk: no Vulkan 1.3 device found (") + std::to_string(devices.size()) +
                               " device(s) of older versions); " + kInstallHint);
@@ -371,10 +406,7 @@ Context::Context() {
                               kInstallHint);
         volkLoadDevice(device_);
         vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
-        VkCommandPoolCreateInfo pi{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-        pi.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-        pi.queueFamilyIndex = queueFamily_;
-        check(vkCreateCommandPool(device_, &pi, nullptr, &pool_), "vkCreateCommandPool");
+        pool_ = createCommandPool();
     } catch (...) {
         if (device_) vkDestroyDevice(device_, nullptr);
         if (messenger_) vkDestroyDebugUtilsMessengerEXT(instance_, messenger_, nullptr);
@@ -497,28 +529,47 @@ void Context::destroy(Image& img) noexcept {
 void Context::submitNow(const std::function<void(VkCommandBuffer)>& record) {
     VkCommandBuffer cmd;
     {
+        // Recording into a buffer of the shared pool is host access to the
+        // pool: hold its lock until the buffer is ended.
         std::lock_guard lock(poolMutex_);
         VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
         ai.commandPool = pool_;
         ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
         ai.commandBufferCount = 1;
         check(vkAllocateCommandBuffers(device_, &ai, &cmd), "vkAllocateCommandBuffers");
+        VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+        bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+        vkBeginCommandBuffer(cmd, &bi);
+        try {
+            record(cmd);
+        } catch (...) {
+            vkEndCommandBuffer(cmd);
+            vkFreeCommandBuffers(device_, pool_, 1, &cmd);
+            throw;
+        }
+        vkEndCommandBuffer(cmd);
     }
-    VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    vkBeginCommandBuffer(cmd, &bi);
-    record(cmd);
-    vkEndCommandBuffer(cmd);
-    VkFenceCreateInfo fi{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    VkFence fence;
-    check(vkCreateFence(device_, &fi, nullptr, &fence), "vkCreateFence");
-    submit(cmd, fence);
-    VkResult r = vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX);
-    vkDestroyFence(device_, fence, nullptr);
-    {
+    auto freeCommandBuffer = [&] {
         std::lock_guard lock(poolMutex_);
         vkFreeCommandBuffers(device_, pool_, 1, &cmd);
+    };
+    VkFenceCreateInfo fi{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VkFence fence;
+    VkResult r = vkCreateFence(device_, &fi, nullptr, &fence);
+    if (r != VK_SUCCESS) {
+        freeCommandBuffer();
+        check(r, "vkCreateFence");
     }
+    try {
+        submit(cmd, fence);
+    } catch (...) {
+        vkDestroyFence(device_, fence, nullptr);
+        freeCommandBuffer();
+        throw;
+    }
+    r = vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX);
+    vkDestroyFence(device_, fence, nullptr);
+    freeCommandBuffer();
     check(r, "vkWaitForFences (upload)");
 }
 
@@ -547,6 +598,20 @@ void Context::submit(VkCommandBuffer cmd, VkFence fence, VkSemaphore wait, VkPip
 VkResult Context::present(const VkPresentInfoKHR& info) {
     std::lock_guard lock(queueMutex_);
     return vkQueuePresentKHR(queue_, &info);
+}
+
+void Context::waitIdle() {
+    std::lock_guard lock(queueMutex_);
+    vkDeviceWaitIdle(device_);
+}
+
+VkCommandPool Context::createCommandPool() {
+    VkCommandPoolCreateInfo pi{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    pi.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    pi.queueFamilyIndex = queueFamily_;
+    VkCommandPool pool = VK_NULL_HANDLE;
+    check(vkCreateCommandPool(device_, &pi, nullptr, &pool), "vkCreateCommandPool");
+    return pool;
 }
 
 // ---- public functions (Vulkan.h) ----

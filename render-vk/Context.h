@@ -74,7 +74,9 @@ public:
                       std::uint32_t mipLevels = 1, VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT);
     void destroy(Image& image) noexcept;
 
-    /// Records `record` into a one-shot command buffer, submits it and waits.
+    /// Records `record` into a one-shot command buffer of the shared pool,
+    /// submits it and waits (callable from any thread: the pool is locked
+    /// while recording, the queue while submitting).
     void submitNow(const std::function<void(VkCommandBuffer)>& record);
     /// Submits `cmd` signalling `fence` (queue access is serialised).
     void submit(VkCommandBuffer cmd, VkFence fence);
@@ -88,7 +90,19 @@ public:
     bool swapchainEnabled() const noexcept { return swapchain_; }
     /// Whether polygon mode LINE can be used (the wireframe debug view).
     bool wireframeSupported() const noexcept { return wireframe_; }
+    /// vkDeviceWaitIdle with the queue locked (Vulkan requires external
+    /// synchronisation of every queue of the device for it).
+    void waitIdle();
+    /// The queue lock, for any other direct use of queue() (e.g.
+    /// vkQueuePresentKHR): hold it for the duration of the call.
+    [[nodiscard]] std::unique_lock<std::mutex> lockQueue() { return std::unique_lock(queueMutex_); }
 
+    /// A resettable command pool of the queue family for one thread's (one
+    /// renderer's) own command buffers: a pool and the buffers allocated from
+    /// it must be used by one thread at a time, so renderers never share one.
+    VkCommandPool createCommandPool();
+
+    /// The shared pool of submitNow; use only with poolMutex() held.
     VkCommandPool commandPool() const noexcept { return pool_; }
     std::mutex& poolMutex() noexcept { return poolMutex_; }
 

@@ -113,9 +113,10 @@ Renderer::Renderer() : ctx_(Context::shared()) {
     VkFenceCreateInfo fi{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     check(vkCreateFence(ctx_->device(), &fi, nullptr, &fence_), "vkCreateFence");
     {
-        std::lock_guard lock(ctx_->poolMutex());
+        // A pool of this renderer's own: renderers on different threads record concurrently.
+        commandPool_ = ctx_->createCommandPool();
         VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-        ai.commandPool = ctx_->commandPool();
+        ai.commandPool = commandPool_;
         ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
         ai.commandBufferCount = 1;
         check(vkAllocateCommandBuffers(ctx_->device(), &ai, &cmd_), "vkAllocateCommandBuffers");
@@ -127,7 +128,7 @@ Renderer::Renderer() : ctx_(Context::shared()) {
 
 Renderer::~Renderer() {
     VkDevice device = ctx_->device();
-    vkDeviceWaitIdle(device);
+    ctx_->waitIdle();
     resources_.reset();
     for (auto& c : chunks_) ctx_->destroy(c.buffer);
     vkDestroyDescriptorPool(device, uniformPool_, nullptr);
@@ -140,13 +141,12 @@ Renderer::~Renderer() {
     ctx_->destroy(msaaColor_);
     ctx_->destroy(initial_);
     vkDestroyFence(device, fence_, nullptr);
-    std::lock_guard lock(ctx_->poolMutex());
-    vkFreeCommandBuffers(device, ctx_->commandPool(), 1, &cmd_);
+    vkDestroyCommandPool(device, commandPool_, nullptr);  // frees cmd_
 }
 
 void Renderer::ensureTargetImages(std::uint32_t width, std::uint32_t height, VkSampleCountFlagBits samples) {
     if (color_.image && width_ == width && height_ == height && samples_ == samples) return;
-    vkDeviceWaitIdle(ctx_->device());
+    ctx_->waitIdle();
     resources_->forgetTextureSets();  // they may name initial_'s view
     ctx_->destroy(color_);
     ctx_->destroy(depth_);

@@ -87,6 +87,7 @@ private:
     Image msaaColor_, initial_;  // ANTIALIAS: multisampled colour and the prior contents to start from
     VkSampleCountFlagBits samples_ = VK_SAMPLE_COUNT_1_BIT;
     std::uint32_t width_ = 0, height_ = 0;
+    VkCommandPool commandPool_ = VK_NULL_HANDLE;  // this renderer's own (threading.md)
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;
     bool recording_ = false;

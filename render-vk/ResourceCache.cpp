@@ -69,7 +69,7 @@ ResourceCache::ResourceCache(Context& ctx, VkDescriptorSetLayout textureSetLayou
 }
 
 ResourceCache::~ResourceCache() {
-    vkDeviceWaitIdle(ctx_.device());
+    ctx_.waitIdle();
     endFrame();
     for (auto& [id, e] : vertices_) ctx_.destroy(e.mirror.buffer);
     for (auto& [id, e] : indices_) ctx_.destroy(e.mirror.buffer);

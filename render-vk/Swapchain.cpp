@@ -58,7 +58,7 @@ Swapchain::Swapchain(Context& ctx, std::uint64_t surface, bool vsync)
 }
 
 Swapchain::~Swapchain() {
-    vkDeviceWaitIdle(ctx_.device());
+    ctx_.waitIdle();
     destroySwapchain();
     vkDestroySemaphore(ctx_.device(), acquired_, nullptr);
     ctx_.destroy(back_);
@@ -79,7 +79,7 @@ void Swapchain::destroySwapchain() noexcept {
 Image& Swapchain::back(std::uint32_t width, std::uint32_t height, bool& created) {
     created = false;
     if (back_.image && back_.width == width && back_.height == height) return back_;
-    vkDeviceWaitIdle(ctx_.device());
+    ctx_.waitIdle();
     ctx_.destroy(back_);
     back_ = ctx_.createImage(width, height, VK_FORMAT_R8G8B8A8_UNORM,
                              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
@@ -90,7 +90,7 @@ Image& Swapchain::back(std::uint32_t width, std::uint32_t height, bool& created)
 
 void Swapchain::build(std::uint32_t width, std::uint32_t height) {
     VkDevice device = ctx_.device();
-    vkDeviceWaitIdle(device);
+    ctx_.waitIdle();
     VkSurfaceCapabilitiesKHR caps{};
     check(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(ctx_.physicalDevice(), surface_, &caps),
           "vkGetPhysicalDeviceSurfaceCapabilitiesKHR");

@@ -13,7 +13,9 @@ constexpr int kAllHints = Graphics3D::ANTIALIAS | Graphics3D::DITHER | Graphics3
 }
 
 Graphics3D::Graphics3D() : queue_(std::make_unique<detail::RenderQueue>()) {}
-Graphics3D::~Graphics3D() = default;
+Graphics3D::~Graphics3D() { releaseRenderer(); }
+
+std::unique_ptr<Graphics3D> Graphics3D::create() { return std::unique_ptr<Graphics3D>(new Graphics3D()); }
 
 void Graphics3D::requireTarget(const char* where) const {
     if (!target_) throw IllegalStateException(detail::str(where, ": no target is bound (call bindTarget first)"));

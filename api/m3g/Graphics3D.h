@@ -2,6 +2,13 @@
 // (spec digest §4.26, §5.3, §5.4). State, properties and binding rules are
 // implemented in scene/; clear() and render() are implemented by render-vk,
 // which records them into a Vulkan command buffer submitted at releaseTarget.
+//
+// Threading (docs/threading.md): a Graphics3D is used by one thread at a
+// time. getInstance() is the process-wide one of JSR-184; a program that
+// renders on several threads gives each thread its own from create(). The
+// Vulkan device behind them is shared and safe to use from all of them at
+// once. The objects a Graphics3D renders (and the bound target) must not be
+// used by another thread while it renders them, read-only use included.
 #pragma once
 
 #include <map>
@@ -43,6 +50,11 @@ public:
 
     /// The process-wide instance.
     static Graphics3D* getInstance();
+    /// A new, independent Graphics3D (m3g-vk extension, not in JSR-184): its
+    /// own target, camera, lights and renderer, for rendering on another
+    /// thread. Destroy it before the program exits; destruction finishes the
+    /// work of a bound target (as releaseTarget) and frees its GPU resources.
+    static std::unique_ptr<Graphics3D> create();
     /// The implementation properties (spec §4.26 keys plus "m3gRelease").
     static std::map<std::string, Property> getProperties();
 

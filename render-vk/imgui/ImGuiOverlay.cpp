@@ -81,7 +81,7 @@ ImGuiOverlay::Impl::Impl() {
 
 ImGuiOverlay::Impl::~Impl() {
     VkDevice device = ctx->device();
-    vkDeviceWaitIdle(device);
+    ctx->waitIdle();
     ctx->destroy(font.image);
     for (auto& [id, t] : images) ctx->destroy(t.image);
     ctx->destroy(vertices);
@@ -177,7 +177,7 @@ void ImGuiOverlay::Impl::buildPipeline(VkFormat format) {
 UiTexture ImGuiOverlay::Impl::upload(std::uint32_t width, std::uint32_t height, const std::uint8_t* rgba,
                                      UiTexture texture) {
     if (!texture.image.image || texture.image.width != width || texture.image.height != height) {
-        vkDeviceWaitIdle(ctx->device());
+        ctx->waitIdle();
         ctx->destroy(texture.image);
         texture.image = ctx->createImage(width, height, VK_FORMAT_R8G8B8A8_UNORM,
                                          VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);

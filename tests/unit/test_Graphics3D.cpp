@@ -1,6 +1,9 @@
 // Graphics3D state, properties and target binding rules (spec digest §4.26, §9).
 #include <gtest/gtest.h>
 
+#include <limits>
+#include <memory>
+
 #include <m3g/Graphics3D.h>
 
 using namespace m3g;
@@ -147,4 +150,37 @@ TEST_F(Graphics3DTest, Lights) {
     EXPECT_THROW(g3d->getLight(-1, nullptr), IndexOutOfBoundsException);
     g3d->resetLights();
     EXPECT_EQ(g3d->getLightCount(), 0);
+}
+
+TEST_F(Graphics3DTest, DepthRangeRejectsNaN) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_THROW(g3d->setDepthRange(nan, 1), IllegalArgumentException);
+    EXPECT_THROW(g3d->setDepthRange(0, nan), IllegalArgumentException);
+    EXPECT_EQ(g3d->getDepthRangeNear(), 0.0f);
+    EXPECT_EQ(g3d->getDepthRangeFar(), 1.0f);
+}
+
+// Graphics3D::create (docs/threading.md): independent instances, one per
+// rendering thread, none of them the process-wide one.
+TEST_F(Graphics3DTest, CreatedInstancesAreIndependent) {
+    std::unique_ptr<Graphics3D> a = Graphics3D::create(), b = Graphics3D::create();
+    ASSERT_NE(a.get(), g3d);
+    ASSERT_NE(a.get(), b.get());
+    Ref<Image2D> ia = make<Image2D>(Image2D::RGBA, 16, 8), ib = make<Image2D>(Image2D::RGB, 4, 4);
+    a->bindTarget(ia);
+    b->bindTarget(ib);  // no "already bound": each has its own target
+    EXPECT_EQ(g3d->getTarget(), nullptr);
+    EXPECT_EQ(a->getViewportWidth(), 16);
+    EXPECT_EQ(b->getViewportWidth(), 4);
+    Ref<Camera> cam = make<Camera>();
+    a->setCamera(cam, nullptr);
+    EXPECT_EQ(b->getCamera(nullptr), nullptr);
+    Ref<Light> light = make<Light>();
+    b->addLight(light, nullptr);
+    EXPECT_EQ(a->getLightCount(), 0);
+    // Destroying a bound instance unbinds its target (it drops its reference).
+    const int before = ia->getRefCount();
+    a.reset();
+    EXPECT_EQ(ia->getRefCount(), before - 1);
+    b->releaseTarget();
 }
