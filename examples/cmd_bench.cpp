@@ -4,16 +4,20 @@
 //                  describes it) and of this library's palette + kernel on
 //                  each code path, with the speed-up over the baseline.
 // m3g bench morph  the morph kernel against the plain per-target loop.
+// Both add the compute-shader path (Graphics3D::SKINNING_COMPUTE; on
+// lavapipe when that is the device) as a last column (ComputeBench.h).
 // Options: --quick (fewer sizes, shorter runs), --baseline-max N (largest
 // mesh the O(V^2) baseline runs on, default 100000), --run L (vertices per
 // addTransform record, default 16), --time S (seconds per measurement,
-// default 0.3).
+// default 0.3), --no-compute (CPU paths only).
 #include "cmd_bench.h"
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,6 +25,7 @@
 #include <m3g/skin/Isa.h>
 #include <m3g/skin/ThreadPool.h>
 
+#include "ComputeBench.h"
 #include "SkinWorkload.h"
 
 namespace m3gcli {
@@ -35,6 +40,7 @@ struct BenchOptions {
     std::size_t baselineMax = 100000;
     int runLength = 16;
     double seconds = 0.3;
+    bool compute = true;
 };
 
 /// Median seconds per frame of `frame()`: batches of at least 2 ms (or one
@@ -60,23 +66,76 @@ double secondsPerFrame(F&& frame, double seconds) {
 }
 
 const Variant kVariants[] = {Variant::Baseline, Variant::Scalar, Variant::Sse2, Variant::Avx2, Variant::Parallel};
+/// Columns: the variants, then the compute path.
+constexpr int kColumns = 6;
+
+const char* columnName(int i) { return i < 5 ? m3gbench::variantName(kVariants[i]) : "compute"; }
 
 void printHeader(const char* first, const char* second, const char* third) {
     std::printf("%9s %6s %6s", first, second, third);
-    for (Variant v : kVariants) std::printf(" %10s", m3gbench::variantName(v));
+    for (int i = 0; i < kColumns; ++i) std::printf(" %10s", columnName(i));
     std::printf(" %8s %9s\n", "best", "speed-up");
 }
 
-/// Prints one row: ns per vertex per variant (negative = not run); a
+/// Median device time of `frames` frames (GPU timestamps around the
+/// dispatches); negative when the device has no timestamps.
+template <class F>
+double medianDispatchSeconds(const ComputeBench& compute, F&& frame, int frames = 9) {
+    std::vector<double> t;
+    for (int i = 0; i < frames; ++i) {
+        frame();
+        t.push_back(compute.lastDispatchSeconds());
+    }
+    std::nth_element(t.begin(), t.begin() + frames / 2, t.end());
+    return t[static_cast<std::size_t>(frames / 2)];
+}
+
+/// Process CPU seconds (all threads: the caller, the driver's queue and
+/// worker threads) per call of `frame()`, over at least 3 calls and about
+/// `seconds` of wall time. On lavapipe the "device" is these threads, so
+/// this is the compute path's cost in CPU time, which a busy machine does
+/// not inflate the way it inflates the wall time of a submit-and-wait.
+template <class F>
+double cpuSecondsPerFrame(F&& frame, double seconds) {
+    auto cpuNow = [] {
+        timespec t{};
+        clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+        return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+    };
+    const double c0 = cpuNow();
+    const auto start = Clock::now();
+    int frames = 0;
+    while (frames < 3 || std::chrono::duration<double>(Clock::now() - start).count() < seconds) {
+        frame();
+        ++frames;
+    }
+    return (cpuNow() - c0) / frames;
+}
+
+/// The compute path's device, or null (with the reason printed) when it is
+/// off or no Vulkan device is usable.
+std::unique_ptr<ComputeBench> openCompute(const BenchOptions& o) {
+    if (!o.compute) return nullptr;
+    std::string why;
+    auto bench = ComputeBench::create(why);
+    if (bench)
+        std::printf("compute path on: %s (palette on the CPU, upload, dispatch, submit and wait per frame)\n",
+                    bench->deviceName().c_str());
+    else
+        std::printf("compute path: not measured (%s)\n", why.c_str());
+    return bench;
+}
+
+/// Prints one row: ns per vertex per column (negative = not run); a
 /// negative `b` leaves its column empty.
-void printRow(std::size_t vertices, int a, int b, const double (&ns)[5]) {
+void printRow(std::size_t vertices, int a, int b, const double (&ns)[kColumns]) {
     if (b >= 0)
         std::printf("%9zu %6d %6d", vertices, a, b);
     else
         std::printf("%9zu %6d %6s", vertices, a, "");
     double best = -1;
     int bestIndex = -1;
-    for (int i = 0; i < 5; ++i) {
+    for (int i = 0; i < kColumns; ++i) {
         if (ns[i] < 0) {
             std::printf(" %10s", "-");
             continue;
@@ -87,7 +146,7 @@ void printRow(std::size_t vertices, int a, int b, const double (&ns)[5]) {
             bestIndex = i;
         }
     }
-    std::printf(" %8s", bestIndex > 0 ? m3gbench::variantName(kVariants[bestIndex]) : "-");
+    std::printf(" %8s", bestIndex > 0 ? columnName(bestIndex) : "-");
     if (ns[0] > 0 && best > 0)
         std::printf(" %8.1fx\n", ns[0] / best);
     else
@@ -109,7 +168,13 @@ int benchSkin(const BenchOptions& o) {
                 "render time), one record per %d-vertex run and bone.\n",
                 o.runLength);
     printIsa(pool);
+    auto compute = openCompute(o);
     std::printf("The paper's meshes: 100, 350, 500 and 1,200 polygons (taken here as vertices).\n\n");
+    struct ComputeRow {
+        std::size_t vertices;
+        double ns, dispatchNs, cpuNs, difference;
+    };
+    std::vector<ComputeRow> computeRows;
     printHeader("vertices", "infl", "bones");
     std::vector<std::size_t> sizes{100, 350, 500, 1200, 10000, 100000, 1000000};
     std::vector<int> influences{1, 2, 3, 4};
@@ -121,7 +186,7 @@ int benchSkin(const BenchOptions& o) {
         const int bones = v <= 1200 ? 20 : 60;
         for (int k : influences) {
             m3gbench::SkinWorkload w(v, k, bones, o.runLength);
-            double ns[5];
+            double ns[kColumns];
             for (int i = 0; i < 5; ++i) {
                 const Variant var = kVariants[i];
                 if ((var == Variant::Baseline && v > o.baselineMax) || !w.frame(var, &pool)) {
@@ -130,7 +195,37 @@ int benchSkin(const BenchOptions& o) {
                 }
                 ns[i] = secondsPerFrame([&] { w.frame(var, &pool); }, o.seconds) * 1e9 / static_cast<double>(v);
             }
+            ns[5] = -1;
+            if (compute) {
+                compute->reset();
+                compute->skinFrame(w);  // uploads the static inputs: once per mesh, not per frame
+                ns[5] = secondsPerFrame([&] { compute->skinFrame(w); }, o.seconds) * 1e9 / static_cast<double>(v);
+                const double dispatch = medianDispatchSeconds(*compute, [&] { compute->skinFrame(w); });
+                const double cpu = cpuSecondsPerFrame([&] { compute->skinFrame(w); }, o.seconds);
+                w.frame(Variant::Scalar);  // the CPU result to check the device's against
+                const double diff = compute->skinDifference(w);
+                if (diff > 1e-4) std::printf("warning: compute skinning differs from the CPU by %.3g\n", diff);
+                if (k == 4 && v >= 10000)
+                    computeRows.push_back({v, ns[5], dispatch * 1e9 / static_cast<double>(v),
+                                           cpu * 1e9 / static_cast<double>(v), diff});
+            }
             printRow(v, k, bones, ns);
+        }
+    }
+    if (!computeRows.empty()) {
+        std::printf("\ncompute path, 4 influences, positions + normals. frame: wall time of palette, upload,\n"
+                    "record, submit and wait; dispatch: device timestamps around the dispatch; cpu: process\n"
+                    "CPU time per frame, all threads (on lavapipe the device is CPU threads):\n"
+                    "%9s %11s %11s %11s %11s %11s %11s %9s\n",
+                    "vertices", "frame ns/v", "frame Mv/s", "disp. ns/v", "disp. Mv/s", "cpu ns/v", "cpu Mv/s",
+                    "max diff");
+        for (const ComputeRow& r : computeRows) {
+            std::printf("%9zu %11.2f %11.2f", r.vertices, r.ns, 1e3 / r.ns);
+            if (r.dispatchNs > 0)
+                std::printf(" %11.2f %11.2f", r.dispatchNs, 1e3 / r.dispatchNs);
+            else
+                std::printf(" %11s %11s", "-", "-");
+            std::printf(" %11.2f %11.2f %9.2g\n", r.cpuNs, 1e3 / r.cpuNs, r.difference);
         }
     }
     return 0;
@@ -141,6 +236,7 @@ int benchMorph(const BenchOptions& o) {
     std::printf("m3g bench morph: nanoseconds per vertex per frame (positions + renormalised normals);\n"
                 "baseline: one pass over the array per target (the earlier reference loop).\n");
     printIsa(pool);
+    auto compute = openCompute(o);
     std::printf("\n");
     printHeader("vertices", "targets", "");
     std::vector<std::size_t> sizes{1200, 10000, 100000, 1000000};
@@ -148,7 +244,7 @@ int benchMorph(const BenchOptions& o) {
     for (std::size_t v : sizes)
         for (int t : {1, 4}) {
             m3gbench::MorphWorkload w(v, t);
-            double ns[5];
+            double ns[kColumns];
             for (int i = 0; i < 5; ++i) {
                 const Variant var = kVariants[i];
                 if (!w.frame(var, &pool)) {
@@ -157,13 +253,22 @@ int benchMorph(const BenchOptions& o) {
                 }
                 ns[i] = secondsPerFrame([&] { w.frame(var, &pool); }, o.seconds) * 1e9 / static_cast<double>(v);
             }
+            ns[5] = -1;
+            if (compute) {
+                compute->reset();
+                compute->morphFrame(w);  // uploads the static inputs
+                ns[5] = secondsPerFrame([&] { compute->morphFrame(w); }, o.seconds) * 1e9 / static_cast<double>(v);
+                w.frame(Variant::Scalar);
+                const double diff = compute->morphDifference(w);
+                if (diff > 1e-4) std::printf("warning: compute morph differs from the CPU by %.3g\n", diff);
+            }
             printRow(v, t, -1, ns);
         }
     return 0;
 }
 
 const char* const kUsage =
-    "usage: m3g bench skin|morph [--quick] [--baseline-max N] [--run L] [--time SECONDS]\n";
+    "usage: m3g bench skin|morph [--quick] [--baseline-max N] [--run L] [--time SECONDS] [--no-compute]\n";
 
 }  // namespace
 
@@ -186,6 +291,8 @@ int benchCommand(int argc, const char* const* argv) {
         if (a == "--quick") {
             o.quick = true;
             o.seconds = 0.1;
+        } else if (a == "--no-compute") {
+            o.compute = false;
         } else if (a == "--baseline-max" || a == "--run" || a == "--time") {
             const char* v = value(std::string(a).c_str());
             if (!v) return 2;

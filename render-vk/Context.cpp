@@ -244,6 +244,15 @@ void check(VkResult result, const char* what) {
                           std::to_string(static_cast<int>(result)) + ")");
 }
 
+VkShaderModule createShaderModule(VkDevice device, const std::uint32_t* code, std::size_t bytes) {
+    VkShaderModuleCreateInfo ci{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    ci.codeSize = bytes;
+    ci.pCode = code;
+    VkShaderModule module;
+    check(vkCreateShaderModule(device, &ci, nullptr, &module), "vkCreateShaderModule");
+    return module;
+}
+
 bool Context::exists() noexcept { return gExists.load(); }
 
 Context& Context::get() { return *shared(); }
@@ -573,19 +582,11 @@ void Context::submitNow(const std::function<void(VkCommandBuffer)>& record) {
     check(r, "vkWaitForFences (upload)");
 }
 
-void Context::submit(VkCommandBuffer cmd, VkFence fence) {
+void Context::submit(std::span<const VkCommandBuffer> cmds, VkFence fence, VkSemaphore wait,
+                     VkPipelineStageFlags waitStage, VkSemaphore signal) {
     VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-    si.commandBufferCount = 1;
-    si.pCommandBuffers = &cmd;
-    std::lock_guard lock(queueMutex_);
-    check(vkQueueSubmit(queue_, 1, &si, fence), "vkQueueSubmit");
-}
-
-void Context::submit(VkCommandBuffer cmd, VkFence fence, VkSemaphore wait, VkPipelineStageFlags waitStage,
-                     VkSemaphore signal) {
-    VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-    si.commandBufferCount = 1;
-    si.pCommandBuffers = &cmd;
+    si.commandBufferCount = static_cast<std::uint32_t>(cmds.size());
+    si.pCommandBuffers = cmds.data();
     si.waitSemaphoreCount = wait ? 1 : 0;
     si.pWaitSemaphores = &wait;
     si.pWaitDstStageMask = &waitStage;
@@ -673,6 +674,7 @@ RenderStats renderStats() {
     s.bufferUploads = c.bufferUploads;
     s.textureUploads = c.textureUploads;
     s.frames = c.frames;
+    s.computeDispatches = c.computeDispatches;
     s.liveBuffers = static_cast<std::uint64_t>(std::max<std::int64_t>(0, c.liveBuffers));
     s.liveTextures = static_cast<std::uint64_t>(std::max<std::int64_t>(0, c.liveTextures));
     s.deviceMemoryBytes = static_cast<std::uint64_t>(std::max<std::int64_t>(0, c.memoryBytes));

@@ -9,6 +9,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <span>
 #include <string>
 
 #include <volk.h>
@@ -24,6 +25,9 @@ void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,
 /// Records a copy of `width` x `height` RGBA texels from `buffer` into mip
 /// level 0 of `image` (in TRANSFER_DST_OPTIMAL layout).
 void copyBufferToImage(VkCommandBuffer cmd, VkBuffer buffer, VkImage image, std::uint32_t width, std::uint32_t height);
+
+/// A shader module from SPIR-V (`bytes` long, as embedded by glslangValidator).
+VkShaderModule createShaderModule(VkDevice device, const std::uint32_t* code, std::size_t bytes);
 
 /// Throws VulkanError naming `what` when `result` is not VK_SUCCESS.
 void check(VkResult result, const char* what);
@@ -79,11 +83,12 @@ public:
     /// while recording, the queue while submitting).
     void submitNow(const std::function<void(VkCommandBuffer)>& record);
     /// Submits `cmd` signalling `fence` (queue access is serialised).
-    void submit(VkCommandBuffer cmd, VkFence fence);
-    /// The same, waiting for `wait` at `waitStage` and signalling `signal`
-    /// (a swapchain frame).
-    void submit(VkCommandBuffer cmd, VkFence fence, VkSemaphore wait, VkPipelineStageFlags waitStage,
-                VkSemaphore signal);
+    void submit(VkCommandBuffer cmd, VkFence fence) { submit(std::span<const VkCommandBuffer>(&cmd, 1), fence); }
+    /// Submits `cmds` in order, in one batch, signalling `fence`; with
+    /// `wait`, the batch waits for it at `waitStage`, and with `signal` it
+    /// signals that semaphore too (a swapchain frame).
+    void submit(std::span<const VkCommandBuffer> cmds, VkFence fence, VkSemaphore wait = VK_NULL_HANDLE,
+                VkPipelineStageFlags waitStage = 0, VkSemaphore signal = VK_NULL_HANDLE);
     /// vkQueuePresentKHR under the queue lock; returns its result.
     VkResult present(const VkPresentInfoKHR& info);
     /// Whether VK_KHR_swapchain was enabled (requestWindowExtensions).
@@ -106,7 +111,8 @@ public:
     VkCommandPool commandPool() const noexcept { return pool_; }
     std::mutex& poolMutex() noexcept { return poolMutex_; }
 
-    std::atomic<std::uint64_t> pipelinesCreated{0}, draws{0}, bufferUploads{0}, textureUploads{0}, frames{0};
+    std::atomic<std::uint64_t> pipelinesCreated{0}, draws{0}, bufferUploads{0}, textureUploads{0}, frames{0},
+        computeDispatches{0};
     std::atomic<std::int64_t> liveBuffers{0}, liveTextures{0}, memoryBytes{0};
 
     ~Context();

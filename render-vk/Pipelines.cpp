@@ -9,15 +9,6 @@ namespace m3g::vk {
 
 namespace {
 
-VkShaderModule createModule(VkDevice device, const std::uint32_t* code, std::size_t bytes) {
-    VkShaderModuleCreateInfo ci{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-    ci.codeSize = bytes;
-    ci.pCode = code;
-    VkShaderModule module;
-    check(vkCreateShaderModule(device, &ci, nullptr, &module), "vkCreateShaderModule");
-    return module;
-}
-
 // Spec digest §5.8: the same factors on colour and alpha.
 VkPipelineColorBlendAttachmentState blendState(std::uint8_t blend, std::uint8_t mask) {
     VkPipelineColorBlendAttachmentState b{};
@@ -56,8 +47,8 @@ Pipelines::Pipelines(Context& ctx) : ctx_(ctx) {
     pl.setLayoutCount = 2;
     pl.pSetLayouts = sets.data();
     check(vkCreatePipelineLayout(device, &pl, nullptr, &layout_), "vkCreatePipelineLayout");
-    vert_ = createModule(device, m3g_vert, sizeof(m3g_vert));
-    frag_ = createModule(device, m3g_frag, sizeof(m3g_frag));
+    vert_ = createShaderModule(device, m3g_vert, sizeof(m3g_vert));
+    frag_ = createShaderModule(device, m3g_frag, sizeof(m3g_frag));
     VkPipelineCacheCreateInfo ci{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
     check(vkCreatePipelineCache(device, &ci, nullptr, &cache_), "vkCreatePipelineCache");
 }

@@ -539,6 +539,7 @@ void Renderer::render(Graphics3D& g3d, const detail::RenderQueue& queue) {
     applyViewport(g3d);
     if (scissorEmpty_) return;
     toColumns(vulkanProjection(queue.projection), projection_);  // once per queue, not per draw
+    computeSkinning_ = g3d.getSkinningMode() == Graphics3D::SKINNING_COMPUTE;
     for (const detail::RenderItem& item : queue.items) {
         if (item.kind == detail::RenderItem::Kind::Sprite) drawSprite(queue, item);
         else drawSubmesh(queue, item);
@@ -549,7 +550,7 @@ void Renderer::drawSubmesh(const detail::RenderQueue& queue, const detail::Rende
     VertexBuffer& vb = *item.vertices;
     const Appearance* app = item.appearance;
     const auto* mesh = dynamic_cast<const Mesh*>(item.node);
-    const VertexMirror& vm = resources_->vertices(vb, mesh);
+    const VertexMirror& vm = resources_->vertices(vb, mesh, computeSkinning_);
     const IndexMirror& im = resources_->indices(*item.indices);
     if (im.count == 0) return;
     if (item.indices->maxIndex() >= vm.vertexCount)
@@ -752,14 +753,20 @@ void Renderer::release(Graphics3D& g3d) {
     if (readbackBgra && !presenting) readbackBgra = false;
     check(vkEndCommandBuffer(cmd_), "vkEndCommandBuffer");
     vkResetFences(ctx_->device(), 1, &fence_);
+    // The frame's compute deformations first, in the same batch: their
+    // closing barrier orders them before the draws' vertex reads.
+    const VkCommandBuffer compute = resources_->finishCompute();
+    const VkCommandBuffer both[2] = {compute, cmd_};
+    const std::span<const VkCommandBuffer> cmds = compute ? std::span<const VkCommandBuffer>(both, 2)
+                                                          : std::span<const VkCommandBuffer>(&cmd_, 1);
     if (presenting) {
         Swapchain& swapchain = window_->swapchain();
-        ctx_->submit(cmd_, fence_, swapchain.acquiredSemaphore(), VK_PIPELINE_STAGE_TRANSFER_BIT,
+        ctx_->submit(cmds, fence_, swapchain.acquiredSemaphore(), VK_PIPELINE_STAGE_TRANSFER_BIT,
                      swapchain.renderedSemaphore());
         swapchain.present();
         window_->markPresented();
     } else {
-        ctx_->submit(cmd_, fence_);
+        ctx_->submit(cmds, fence_);
     }
     check(vkWaitForFences(ctx_->device(), 1, &fence_, VK_TRUE, UINT64_MAX), "vkWaitForFences (frame)");
     ++ctx_->frames;

@@ -92,6 +92,7 @@ private:
     VkFence fence_ = VK_NULL_HANDLE;
     bool recording_ = false;
     bool hasDepth_ = true;
+    bool computeSkinning_ = false;  // Graphics3D::SKINNING_COMPUTE for the queue being drawn
     Buffer transfer_;  // upload of the target's pixels and read-back
     Rect viewport_, scissor_;
     bool scissorEmpty_ = false;

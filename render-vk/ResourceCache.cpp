@@ -71,7 +71,11 @@ ResourceCache::ResourceCache(Context& ctx, VkDescriptorSetLayout textureSetLayou
 ResourceCache::~ResourceCache() {
     ctx_.waitIdle();
     endFrame();
-    for (auto& [id, e] : vertices_) ctx_.destroy(e.mirror.buffer);
+    for (auto& [id, e] : vertices_) {
+        ctx_.destroy(e.mirror.buffer);
+        if (compute_) compute_->release(e.gpu);
+    }
+    compute_.reset();  // frees what release() retired
     for (auto& [id, e] : indices_) ctx_.destroy(e.mirror.buffer);
     for (auto& [id, e] : textures_) ctx_.destroy(e.mirror.image);
     for (auto& [key, s] : samplers_) vkDestroySampler(ctx_.device(), s, nullptr);
@@ -89,32 +93,99 @@ void ResourceCache::retire(Image& image) {
     image = Image{};
 }
 
-void ResourceCache::upload(VertexEntry& entry, const std::array<const std::vector<float>*, 5>& streams, int vertexCount) {
+bool ResourceCache::layoutMirror(VertexEntry& entry, const std::array<bool, 5>& present, int vertexCount) {
     VertexMirror& m = entry.mirror;
     VkDeviceSize size = 0;
     std::array<VkDeviceSize, 5> offsets{};
     for (int i = 0; i < 5; ++i) {
         offsets[i] = size;
-        if (streams[i]) size += static_cast<VkDeviceSize>(vertexCount) * kComponents[i] * sizeof(float);
+        if (present[i]) size += static_cast<VkDeviceSize>(vertexCount) * kComponents[i] * sizeof(float);
     }
     size = std::max<VkDeviceSize>(size, 16);
+    bool fresh = m.present != present || m.offsets != offsets || m.vertexCount != vertexCount;
     // Overwrite in place only if no recorded, unfinished frame reads it.
     if (!m.buffer.buffer || m.buffer.size < size || entry.lastFrame == frame_) {
         retire(m.buffer);
-        m.buffer = ctx_.createHostBuffer(size, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+        // Storage too: the compute path writes deformed streams into it.
+        m.buffer = ctx_.createHostBuffer(size, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        fresh = true;
     }
-    for (int i = 0; i < 5; ++i) {
-        m.present[i] = streams[i] != nullptr;
-        if (streams[i])
-            std::memcpy(static_cast<char*>(m.buffer.mapped) + offsets[i], streams[i]->data(),
-                        static_cast<std::size_t>(vertexCount) * kComponents[i] * sizeof(float));
-    }
+    m.present = present;
     m.offsets = offsets;
     m.vertexCount = vertexCount;
+    return fresh;
+}
+
+void ResourceCache::writeStream(VertexEntry& entry, int stream, const std::vector<float>& values) {
+    VertexMirror& m = entry.mirror;
+    const std::size_t bytes = static_cast<std::size_t>(m.vertexCount) * kComponents[stream] * sizeof(float);
+    std::memcpy(static_cast<char*>(m.buffer.mapped) + m.offsets[static_cast<std::size_t>(stream)], values.data(),
+                std::min(bytes, values.size() * sizeof(float)));
+}
+
+void ResourceCache::upload(VertexEntry& entry, const std::array<const std::vector<float>*, 5>& streams, int vertexCount) {
+    std::array<bool, 5> present{};
+    for (int i = 0; i < 5; ++i) present[i] = streams[i] != nullptr;
+    layoutMirror(entry, present, vertexCount);
+    for (int i = 0; i < 5; ++i)
+        if (streams[i]) writeStream(entry, i, *streams[i]);
     ++ctx_.bufferUploads;
 }
 
-const VertexMirror& ResourceCache::vertices(VertexBuffer& vb, const Mesh* mesh) {
+void ResourceCache::deformOnGpu(VertexEntry& e, VertexBuffer& vb, const Mesh& mesh, bool staticsStale) {
+    using D = detail::MeshDeformer;
+    const D& d = *e.deformer;
+    const int n = vb.getVertexCount();
+    const bool skinned = dynamic_cast<const SkinnedMesh*>(&mesh) != nullptr;
+    std::array<detail::MorphAttributeInputs, D::kMorphAttributes> morph{};
+    if (!skinned)
+        for (int a = 0; a < D::kMorphAttributes; ++a) morph[static_cast<std::size_t>(a)] = d.morphAttribute(a);
+    const detail::SkinInputs skin = skinned ? d.skinInputs() : detail::SkinInputs{};
+
+    // Streams: the deformed ones written by the shaders; a skinned mesh's
+    // colours and texture coordinates are its VertexBuffer's, from the host.
+    std::array<bool, 5> present{};
+    present[0] = true;
+    if (skinned) {
+        present[1] = !skin.normals.empty();
+        present[2] = vb.colors() != nullptr;
+        for (int u = 0; u < 2; ++u) present[3 + u] = vb.texCoords(u) != nullptr;
+    } else {
+        present[1] = morph[D::kMorphNormals].components > 0;
+        present[2] = morph[D::kMorphColors].components > 0;
+        for (int u = 0; u < 2; ++u) present[3 + u] = morph[static_cast<std::size_t>(D::kMorphTexCoords + u)].components > 0;
+    }
+    const bool fresh = layoutMirror(e, present, n);
+    if (skinned && (fresh || staticsStale)) {
+        if (vb.colors()) {
+            colorStream(vb.colors(), scratch_[2]);
+            writeStream(e, 2, scratch_[2]);
+        }
+        for (int u = 0; u < 2; ++u)
+            if (vb.texCoords(u)) {
+                rawStream(vb.texCoords(u), 3, scratch_[3 + u]);
+                writeStream(e, 3 + u, scratch_[3 + u]);
+            }
+        ++ctx_.bufferUploads;
+    }
+
+    if (!compute_) compute_ = std::make_unique<ComputeDeformer>(ctx_);
+    const VertexMirror& m = e.mirror;
+    ComputeDeformer::Streams streams;
+    auto element = [&](int i) { return m.present[i] ? static_cast<std::uint32_t>(m.offsets[i] / sizeof(float)) : kNoStream; };
+    streams.positions = element(0);
+    streams.normals = element(1);
+    streams.colors = element(2);
+    streams.texCoords = {element(3), element(4)};
+    VkCommandBuffer cmd = compute_->frameCommands();
+    if (skinned)
+        compute_->recordSkin(cmd, e.gpu, skin, d.inputStamp(), m.buffer, streams);
+    else
+        compute_->recordMorph(cmd, e.gpu, morph, d.morphWeights(), n, d.inputStamp(), m.buffer, streams);
+    e.computed = true;
+}
+
+const VertexMirror& ResourceCache::vertices(VertexBuffer& vb, const Mesh* mesh, bool compute) {
     const bool deformable = mesh && (dynamic_cast<const SkinnedMesh*>(mesh) || dynamic_cast<const MorphingMesh*>(mesh));
     const Object3D* owner = deformable ? static_cast<const Object3D*>(mesh) : &vb;
     VertexEntry& e = vertices_[owner->getObjectId()];
@@ -127,8 +198,13 @@ const VertexMirror& ResourceCache::vertices(VertexBuffer& vb, const Mesh* mesh) 
 
     if (deformable) {
         if (!e.deformer) e.deformer = std::make_unique<detail::MeshDeformer>();
-        const bool changed = e.deformer->update(*mesh);
-        if (changed || sig != e.signature || !e.mirror.buffer.buffer) {
+        const bool changed = e.deformer->update(*mesh, compute ? detail::MeshDeformer::Output::InputsOnly
+                                                               : detail::MeshDeformer::Output::Vertices);
+        const bool stale = sig != e.signature || !e.mirror.buffer.buffer || e.computed != compute;
+        if (compute && (changed || stale)) {
+            deformOnGpu(e, vb, *mesh, stale);
+            e.signature = sig;
+        } else if (changed || stale) {
             const detail::DeformedVertices& d = e.deformer->vertices();
             std::array<const std::vector<float>*, 5> s{};
             s[0] = &d.positions;
@@ -153,6 +229,7 @@ const VertexMirror& ResourceCache::vertices(VertexBuffer& vb, const Mesh* mesh) 
             }
             upload(e, s, n);
             e.signature = sig;
+            e.computed = false;
         }
         e.mirror.deformed = true;
     } else if (sig != e.signature || !e.mirror.buffer.buffer) {
@@ -355,13 +432,20 @@ void ResourceCache::forgetTextureSets() {
 void ResourceCache::endFrame() {
     // Mirrors of objects that no longer exist.
     for (auto it = vertices_.begin(); it != vertices_.end();)
-        if (!it->second.owner.get()) { retire(it->second.mirror.buffer); it = vertices_.erase(it); } else ++it;
+        if (!it->second.owner.get()) {
+            retire(it->second.mirror.buffer);
+            if (compute_) compute_->release(it->second.gpu);
+            it = vertices_.erase(it);
+        } else {
+            ++it;
+        }
     for (auto it = indices_.begin(); it != indices_.end();)
         if (!it->second.owner.get()) { retire(it->second.mirror.buffer); it = indices_.erase(it); } else ++it;
     for (auto it = textures_.begin(); it != textures_.end();)
         if (!it->second.owner.get()) { retire(it->second.mirror.image); it = textures_.erase(it); } else ++it;
     for (Buffer& b : retiredBuffers_) ctx_.destroy(b);
     retiredBuffers_.clear();
+    if (compute_) compute_->endFrame();
     if (!retiredImages_.empty()) {
         // Descriptor sets may name the freed views: start the set cache afresh.
         forgetTextureSets();

@@ -15,6 +15,7 @@
 #include <m3g/Object3D.h>
 #include <m3g/Ref.h>
 
+#include "ComputeDeformer.h"
 #include "Context.h"
 #include "MeshDeformer.h"
 
@@ -53,8 +54,16 @@ public:
     ~ResourceCache();
 
     /// Streams of `vb`, or of `mesh`'s deformed vertices when it is a
-    /// SkinnedMesh or MorphingMesh. ISE on invalid vertex data.
-    const VertexMirror& vertices(VertexBuffer& vb, const Mesh* mesh);
+    /// SkinnedMesh or MorphingMesh: deformed on the CPU and uploaded, or,
+    /// with `compute`, by ComputeDeformer into the mirror (recorded into the
+    /// frame's compute commands, see finishCompute). Either way only when an
+    /// input changed. ISE on invalid vertex data.
+    const VertexMirror& vertices(VertexBuffer& vb, const Mesh* mesh, bool compute = false);
+    /// The frame's compute commands, ended with their barrier, to submit
+    /// before the draws; VK_NULL_HANDLE when the frame deformed nothing on
+    /// the GPU.
+    VkCommandBuffer finishCompute() { return compute_ ? compute_->finishFrame() : VK_NULL_HANDLE; }
+
     /// A triangle list with each triangle's OpenGL provoking vertex (the
     /// strip's last) first, because Vulkan's flat shading uses the first.
     const IndexMirror& indices(IndexBuffer& ib);
@@ -82,6 +91,10 @@ private:
         VertexMirror mirror;
         std::unique_ptr<detail::MeshDeformer> deformer;
         std::uint64_t lastFrame = 0;
+        /// The compute path's inputs; `computed`: the mirror was last
+        /// written by it (its static streams are in place).
+        GpuDeformState gpu;
+        bool computed = false;
     };
     struct IndexEntry {
         WeakRef<Object3D> owner;
@@ -96,6 +109,13 @@ private:
     };
 
     void upload(VertexEntry& entry, const std::array<const std::vector<float>*, 5>& streams, int vertexCount);
+    /// Lays out `present` streams of `vertexCount` vertices in the entry's
+    /// buffer, replacing it when too small or already used by this frame.
+    /// Returns true when the buffer is new (its contents undefined).
+    bool layoutMirror(VertexEntry& entry, const std::array<bool, 5>& present, int vertexCount);
+    void writeStream(VertexEntry& entry, int stream, const std::vector<float>& values);
+    /// The compute path of vertices().
+    void deformOnGpu(VertexEntry& entry, VertexBuffer& vb, const Mesh& mesh, bool staticsStale);
     void retire(Buffer& buffer);
     void retire(Image& image);
     TextureMirror createTexture(Image2D& image, bool mipmaps);
@@ -114,6 +134,7 @@ private:
     std::vector<Buffer> retiredBuffers_;
     std::vector<Image> retiredImages_;
     std::vector<float> scratch_[5];
+    std::unique_ptr<ComputeDeformer> compute_;
 };
 
 }  // namespace m3g::vk

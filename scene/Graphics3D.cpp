@@ -2,6 +2,11 @@
 
 #include <m3g/Version.h>
 
+#include <cctype>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
 #include "Check.h"
 #include "RenderBackend.h"
 #include "RenderQueue.h"
@@ -10,9 +15,33 @@ namespace m3g {
 
 namespace {
 constexpr int kAllHints = Graphics3D::ANTIALIAS | Graphics3D::DITHER | Graphics3D::TRUE_COLOR | Graphics3D::OVERWRITE;
+
+/// M3G_SKINNING: "cpu" or "compute" (case-insensitive); unset or empty: CPU.
+/// Anything else is reported on stderr once and means CPU: a test setting
+/// a wrong value must see why its choice did not take.
+int skinningModeFromEnvironment() {
+    const char* value = std::getenv("M3G_SKINNING");
+    if (!value || !*value) return Graphics3D::SKINNING_CPU;
+    std::string v(value);
+    for (char& c : v) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (v == "cpu") return Graphics3D::SKINNING_CPU;
+    if (v == "compute") return Graphics3D::SKINNING_COMPUTE;
+    std::fprintf(stderr, "m3g-vk: M3G_SKINNING=\"%s\" is not cpu or compute; skinning on the CPU\n", value);
+    return Graphics3D::SKINNING_CPU;
 }
 
-Graphics3D::Graphics3D() : queue_(std::make_unique<detail::RenderQueue>()) {}
+}  // namespace
+
+Graphics3D::Graphics3D()
+    : skinningMode_(skinningModeFromEnvironment()), queue_(std::make_unique<detail::RenderQueue>()) {}
+
+void Graphics3D::setSkinningMode(int mode) {
+    if (mode != SKINNING_CPU && mode != SKINNING_COMPUTE)
+        throw IllegalArgumentException(detail::str("Graphics3D::setSkinningMode: mode ", mode,
+                                                   " is not SKINNING_CPU (0) or SKINNING_COMPUTE (1)"));
+    skinningMode_ = mode;
+}
+
 Graphics3D::~Graphics3D() { releaseRenderer(); }
 
 std::unique_ptr<Graphics3D> Graphics3D::create() { return std::unique_ptr<Graphics3D>(new Graphics3D()); }

@@ -118,10 +118,25 @@ void MeshDeformer::finish() {
     ++stamp_;
 }
 
-bool MeshDeformer::update(const Mesh& mesh) {
+SkinInputs MeshDeformer::skinInputs() const noexcept {
+    return kind_ == Kind::Skinned && valid_ ? skinInputs_ : SkinInputs{};
+}
+
+MorphAttributeInputs MeshDeformer::morphAttribute(int index) const noexcept {
+    if (kind_ != Kind::Morphing || !valid_ || index < 0 || index >= kMorphAttributes) return {};
+    const MorphAttribute& a = morph_[static_cast<std::size_t>(index)];
+    if (a.components == 0) return {};
+    return {a.components, a.values[0], std::span<const std::vector<float>>(a.values).subspan(1)};
+}
+
+bool MeshDeformer::update(const Mesh& mesh, Output output) {
+    // A result made for the other output is not a result for this one.
+    if (output != output_) valid_ = false;
+    output_ = output;
     if (const auto* skinned = dynamic_cast<const SkinnedMesh*>(&mesh)) return updateSkinned(*skinned);
     if (const auto* morphing = dynamic_cast<const MorphingMesh*>(&mesh)) return updateMorphing(*morphing);
     out_ = DeformedVertices{};
+    skinInputs_ = SkinInputs{};
     kind_ = Kind::None;
     valid_ = false;
     sources_.clear();
@@ -144,8 +159,9 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
             rawPositions_.assign(n * 3, 0.0f);
         floatNormals(vb.normals(), baseNormals_);
         out_.vertexCount = static_cast<int>(n);
-        out_.positions.resize(n * 3);
-        out_.normals.resize(baseNormals_.size());
+        const bool cpu = output_ == Output::Vertices;
+        out_.positions.resize(cpu ? n * 3 : 0);
+        out_.normals.resize(cpu ? baseNormals_.size() : 0);
         out_.colors.clear();
         for (auto& t : out_.texCoords) t.clear();
         out_.texCoordComponents.fill(0);
@@ -157,6 +173,7 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         valid_ = false;
         partition_.build(table.bones(), table.maxInfluences(), n);
         tableRevision_ = table.revision();
+        ++inputStamp_;
     }
 
     // The palette, once per bone: (bone -> mesh now) x (at rest).
@@ -185,6 +202,20 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
     valid_ = false;
 
     const bool hasPositions = vb.positions() != nullptr;
+    // No position array: zeros (skinned like any point).
+    skinInputs_.vertexCount = static_cast<int>(n);
+    skinInputs_.positions = rawPositions_;
+    skinInputs_.positionScale = hasPositions ? vb.positionScale() : 1.0f;
+    skinInputs_.positionBias = hasPositions ? vb.positionBias() : std::array<float, 3>{0.0f, 0.0f, 0.0f};
+    skinInputs_.normals = baseNormals_;
+    skinInputs_.influenceStride = table.maxInfluences();
+    skinInputs_.bones = table.bones();
+    skinInputs_.weights = table.weights();
+    skinInputs_.palette = palette_;
+    if (output_ == Output::InputsOnly) {
+        finish();
+        return true;
+    }
     for (int c = 0; c <= partition_.maxInfluences(); ++c) {
         const auto group = partition_.group(c);
         if (group.empty()) continue;
@@ -196,9 +227,8 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         job.boneIndices = table.bones();
         job.boneWeights = table.weights();
         job.palette = palette_;
-        // No position array: zeros (skinned like any point), as before.
-        job.positionScale = hasPositions ? vb.positionScale() : 1.0f;
-        job.positionBias = hasPositions ? vb.positionBias() : std::array<float, 3>{0.0f, 0.0f, 0.0f};
+        job.positionScale = skinInputs_.positionScale;
+        job.positionBias = skinInputs_.positionBias;
         job.inPositions = rawPositions_;
         job.outPositions = out_.positions;
         job.inNormals = baseNormals_;
@@ -264,7 +294,7 @@ bool MeshDeformer::updateMorphing(const MorphingMesh& mesh) {
         out_.vertexCount = static_cast<int>(n);
         auto size = [&](int attribute, std::vector<float>& out) {
             const int comps = morph_[static_cast<std::size_t>(attribute)].components;
-            if (comps == 0)
+            if (comps == 0 || output_ == Output::InputsOnly)
                 out.clear();
             else
                 out.resize(n * static_cast<std::size_t>(comps));
@@ -276,8 +306,13 @@ bool MeshDeformer::updateMorphing(const MorphingMesh& mesh) {
             size(kMorphTexCoords + u, out_.texCoords[u]);
             out_.texCoordComponents[u] = morph_[kMorphTexCoords + u].components;
         }
+        ++inputStamp_;
     }
     weights_.assign(weights.begin(), weights.end());
+    if (output_ == Output::InputsOnly) {
+        finish();
+        return true;
+    }
 
     // Targets with weight 0 contribute nothing: leave them out.
     activeWeights_.clear();

@@ -5,9 +5,8 @@
 
 #include <array>
 #include <cstdint>
-#include <vector>
-
 #include <span>
+#include <vector>
 
 #include <m3g/Limits.h>
 #include <m3g/skin/Palette.h>
@@ -40,22 +39,84 @@ struct DeformedVertices {
     std::array<int, kMaxTextureUnits> texCoordComponents{};
 };
 
+/// The kernel inputs of a SkinnedMesh as of the last update() (for a GPU
+/// that runs the same kernel: render-vk's compute path). The spans point
+/// into the deformer and the mesh's influence table; they stay valid until
+/// the next update() or a change to the mesh.
+struct SkinInputs {
+    int vertexCount = 0;
+    /// Raw xyz per vertex (zeros when the VertexBuffer has no positions);
+    /// the kernel applies positionScale and positionBias.
+    std::span<const float> positions;
+    float positionScale = 1.0f;
+    std::array<float, 3> positionBias{0.0f, 0.0f, 0.0f};
+    /// xyz per vertex with the GL signed-normalised mapping; empty: no normals.
+    std::span<const float> normals;
+    /// The influence table (InfluenceTable's layout): `influenceStride` slots
+    /// per vertex for tableVertices = bones.size() / influenceStride vertices
+    /// (fewer or more than vertexCount); bone -1 = empty slot.
+    int influenceStride = 0;
+    std::span<const std::int32_t> bones;
+    std::span<const float> weights;
+    /// One entry per bone, as posed at the last update().
+    std::span<const skin::PaletteEntry> palette;
+};
+
+/// One attribute of a MorphingMesh as of the last update(): base and target
+/// values as floats (`components` per vertex; positions with the base's
+/// scale and bias applied, normals GL-mapped, colours RGBA in [0, 1],
+/// texture coordinates raw). components == 0: the attribute is absent.
+struct MorphAttributeInputs {
+    int components = 0;
+    std::span<const float> base;
+    std::span<const std::vector<float>> targets;
+};
+
 /// Per-mesh deformation state. A renderer or picker keeps one per mesh (in
 /// its own side table) and calls update() before using vertices().
 class MeshDeformer {
 public:
+    /// What update() produces.
+    enum class Output {
+        /// Runs the CPU kernels: vertices() holds the deformed vertices.
+        Vertices,
+        /// Refreshes the kernel inputs (skinInputs(), morphAttribute(),
+        /// morphWeights()) and detects changes, but runs no kernel:
+        /// vertices() holds only vertexCount and texCoordComponents. For a
+        /// GPU that deforms from the same inputs (render-vk's compute path).
+        InputsOnly,
+    };
+
     /// Recomputes the deformed vertices of `mesh` (a SkinnedMesh with its
     /// bones as posed now, or a MorphingMesh with its current weights).
-    /// Returns true when vertices() changed since the previous call (always
-    /// true on the first call). Returns false and leaves vertices() empty for
-    /// a plain Mesh. Throws IllegalStateException when a MorphingMesh's
+    /// Returns true when the deformed vertices changed since the previous
+    /// call (always true on the first call and when `output` differs from
+    /// the previous call's). Returns false and leaves vertices() empty for a
+    /// plain Mesh. Throws IllegalStateException when a MorphingMesh's
     /// targets do not have the base's set of arrays (§4.9).
-    bool update(const Mesh& mesh);
+    bool update(const Mesh& mesh, Output output = Output::Vertices);
 
     const DeformedVertices& vertices() const noexcept { return out_; }
 
     /// Increments each time update() returns true: a key for GPU mirrors.
     std::uint64_t stamp() const noexcept { return stamp_; }
+    /// Increments each time update() rebuilt the static inputs (vertex
+    /// arrays, influence table, morph targets), as opposed to only the
+    /// palette or the weights: a key for GPU copies of those inputs.
+    std::uint64_t inputStamp() const noexcept { return inputStamp_; }
+
+    /// Inputs of the last update() of a SkinnedMesh (empty otherwise).
+    SkinInputs skinInputs() const noexcept;
+
+    /// Morph attribute indices: positions, normals, colours, then one per
+    /// texture unit.
+    static constexpr int kMorphPositions = 0, kMorphNormals = 1, kMorphColors = 2, kMorphTexCoords = 3;
+    static constexpr int kMorphAttributes = 3 + kMaxTextureUnits;
+    /// Attribute `index` of the last update() of a MorphingMesh
+    /// (components 0 when absent or not a MorphingMesh).
+    MorphAttributeInputs morphAttribute(int index) const noexcept;
+    /// The weights of the last update() of a MorphingMesh, one per target.
+    std::span<const float> morphWeights() const noexcept { return weights_; }
 
 private:
     /// An object read by the last computation: (object id, revision); id 0
@@ -78,6 +139,8 @@ private:
 
     DeformedVertices out_;
     std::uint64_t stamp_ = 0;
+    std::uint64_t inputStamp_ = 0;
+    Output output_ = Output::Vertices;  // of the last update()
 
     // ---- Change detection: out_ is valid for exactly these inputs ----
     Kind kind_ = Kind::None;
@@ -90,6 +153,7 @@ private:
     std::vector<float> rawPositions_;  // unscaled; scale and bias go to the kernel
     std::vector<float> baseNormals_;   // GL signed-normalised mapping
     std::uint32_t tableRevision_ = 0;
+    SkinInputs skinInputs_;
     skin::InfluencePartition partition_;
     std::vector<float> boneMatrices_;  // 16 per bone: bone -> mesh now
     std::vector<float> atRest_;        // 16 per bone
@@ -100,8 +164,7 @@ private:
         std::vector<std::vector<float>> values;  // [0] = base, [1 + t] = target t
         int components = 0;                      // 0: attribute absent
     };
-    enum { kMorphPositions, kMorphNormals, kMorphColors, kMorphTexCoords };
-    std::array<MorphAttribute, 3 + kMaxTextureUnits> morph_;
+    std::array<MorphAttribute, kMorphAttributes> morph_;
     std::vector<float> weights_;                 // the weights out_ was made with
     std::vector<float> activeWeights_;           // scratch: non-zero weights
     std::vector<std::span<const float>> activeTargets_;

@@ -132,6 +132,22 @@ public:
     /// IOOBE if out of range; fills `transform` if non-null.
     Ref<Light> getLight(int index, Transform* transform) const;
 
+    // ---- m3g-vk extension (not part of JSR-184) ----
+    /// Where the vertices of SkinnedMesh and MorphingMesh are deformed for
+    /// drawing: on the CPU (skin/ kernels, the default) or by compute shaders
+    /// on the Vulkan device (shaders/skin.comp, morph.comp), which write the
+    /// vertex buffer the draw reads. Either way deformation runs only when a
+    /// bone, weight or target changed, and picking (Group::pick) always uses
+    /// the CPU-deformed vertices.
+    static constexpr int SKINNING_CPU = 0;
+    static constexpr int SKINNING_COMPUTE = 1;
+    /// m3g-vk extension: selects SKINNING_CPU or SKINNING_COMPUTE for the
+    /// following render calls (IAE otherwise). The initial mode comes from
+    /// the environment variable M3G_SKINNING (`cpu` or `compute`), else CPU.
+    void setSkinningMode(int mode);
+    /// m3g-vk extension: the current skinning mode.
+    int getSkinningMode() const noexcept { return skinningMode_; }
+
     // ---- Engine interface ----
     /// Frees the renderer and its GPU resources (after finishing the work of
     /// a bound target); the next clear or render creates a new one.
@@ -173,6 +189,7 @@ private:
     Ref<Camera> camera_;
     Transform cameraToWorld_, worldToCamera_;
     std::vector<LightEntry> lights_;
+    int skinningMode_ = SKINNING_CPU;
     std::unique_ptr<detail::RenderBackend> backend_;
     std::unique_ptr<detail::RenderQueue> queue_;
 };

@@ -1,8 +1,10 @@
 // Graphics3D state, properties and target binding rules (spec digest §4.26, §9).
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <limits>
 #include <memory>
+#include <string>
 
 #include <m3g/Graphics3D.h>
 
@@ -183,4 +185,25 @@ TEST_F(Graphics3DTest, CreatedInstancesAreIndependent) {
     a.reset();
     EXPECT_EQ(ia->getRefCount(), before - 1);
     b->releaseTarget();
+}
+
+TEST_F(Graphics3DTest, SkinningModeExtension) {
+    // m3g-vk extension: CPU unless M3G_SKINNING said otherwise at start-up.
+    const char* env = std::getenv("M3G_SKINNING");
+    const bool compute = env && std::string(env) == "compute";
+    const int initial = g3d->getSkinningMode();
+    EXPECT_EQ(initial, compute ? Graphics3D::SKINNING_COMPUTE : Graphics3D::SKINNING_CPU);
+    g3d->setSkinningMode(Graphics3D::SKINNING_COMPUTE);
+    EXPECT_EQ(g3d->getSkinningMode(), Graphics3D::SKINNING_COMPUTE);
+    g3d->setSkinningMode(Graphics3D::SKINNING_CPU);
+    EXPECT_EQ(g3d->getSkinningMode(), Graphics3D::SKINNING_CPU);
+    try {
+        g3d->setSkinningMode(2);
+        FAIL() << "mode 2 accepted";
+    } catch (const IllegalArgumentException& e) {
+        EXPECT_NE(std::string(e.what()).find("Graphics3D::setSkinningMode: mode 2"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(g3d->setSkinningMode(-1), IllegalArgumentException);
+    EXPECT_EQ(g3d->getSkinningMode(), Graphics3D::SKINNING_CPU);  // unchanged by the rejected calls
+    g3d->setSkinningMode(initial);
 }

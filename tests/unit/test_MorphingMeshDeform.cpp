@@ -230,3 +230,34 @@ TEST(MorphingMeshDeform, LargeMeshTakesTheParallelPath) {
     ASSERT_TRUE(d.update(*mesh));
     for (int v = 0; v < n; v += 997) EXPECT_FLOAT_EQ(d.vertices().positions[static_cast<std::size_t>(v) * 3], float(v % 1000 + 25)) << v;
 }
+
+TEST(MorphingMeshDeform, InputsOnlyExposesBaseTargetsAndWeights) {
+    Morph m;
+    m.weights(0.5f, 0.0f);
+    MeshDeformer d;
+    using Output = MeshDeformer::Output;
+    EXPECT_TRUE(d.update(*m.mesh, Output::InputsOnly));
+    EXPECT_TRUE(d.vertices().positions.empty());
+    EXPECT_EQ(d.vertices().texCoordComponents[0], 2);
+    const auto positions = d.morphAttribute(MeshDeformer::kMorphPositions);
+    EXPECT_EQ(positions.components, 3);
+    ASSERT_EQ(positions.targets.size(), 2u);
+    // Base and targets with the base's scale 0.5 and bias (1, 0, 0) applied.
+    EXPECT_FLOAT_EQ(positions.base[3], 0.5f * 10 + 1);
+    EXPECT_FLOAT_EQ(positions.targets[0][0], 0.5f * 4 + 1);
+    EXPECT_EQ(d.morphAttribute(MeshDeformer::kMorphColors).components, 4);
+    EXPECT_EQ(d.morphAttribute(MeshDeformer::kMorphTexCoords + 1).components, 0);  // no unit 1
+    EXPECT_EQ(d.morphAttribute(99).components, 0);
+    ASSERT_EQ(d.morphWeights().size(), 2u);
+    EXPECT_EQ(d.morphWeights()[0], 0.5f);
+    const auto stamp = d.inputStamp();
+    EXPECT_FALSE(d.update(*m.mesh, Output::InputsOnly));
+    m.weights(0.25f, 1.0f);  // the weights only
+    EXPECT_TRUE(d.update(*m.mesh, Output::InputsOnly));
+    EXPECT_EQ(d.inputStamp(), stamp);
+    EXPECT_EQ(d.morphWeights()[1], 1.0f);
+    const std::int16_t moved[] = {1, 2, 3};
+    m.t1->getPositions()->set(0, 1, moved);  // a target's data: static inputs rebuilt
+    EXPECT_TRUE(d.update(*m.mesh, Output::InputsOnly));
+    EXPECT_GT(d.inputStamp(), stamp);
+}

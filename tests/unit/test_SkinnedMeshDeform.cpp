@@ -417,3 +417,49 @@ TEST(SkinnedMeshDeform, LargeMeshTakesTheParallelPath) {
     }
     EXPECT_FALSE(d.update(*r.mesh));
 }
+
+TEST(SkinnedMeshDeform, InputsOnlyKeepsTheChangeDetectionWithoutRunningTheKernel) {
+    // Output::InputsOnly (the compute path): the same answers from update(),
+    // the kernel inputs exposed, vertices() left empty; inputStamp() moves
+    // only when the static inputs were rebuilt, not with the pose.
+    Rig r(makeVB({1, 0, 0, /**/ 0, 1, 0, /**/ 0, 0, 1}, 2.0f, {0, 0, 5}, {32767, 0, 0, 0, 32767, 0, 0, 0, 32767}), 2);
+    r.mesh->addTransform(r.bones[0], 1, 0, 2);
+    r.mesh->addTransform(r.bones[1], 3, 1, 1);
+    MeshDeformer d;
+    using Output = MeshDeformer::Output;
+    EXPECT_TRUE(d.update(*r.mesh, Output::InputsOnly));
+    EXPECT_TRUE(d.vertices().positions.empty());
+    EXPECT_TRUE(d.vertices().normals.empty());
+    EXPECT_EQ(d.vertices().vertexCount, 3);
+    const detail::SkinInputs in = d.skinInputs();
+    EXPECT_EQ(in.vertexCount, 3);
+    EXPECT_EQ(in.positionScale, 2.0f);
+    EXPECT_EQ(in.positionBias[2], 5.0f);
+    ASSERT_EQ(in.positions.size(), 9u);
+    EXPECT_EQ(in.positions[0], 1.0f);  // raw: the kernel applies scale and bias
+    EXPECT_EQ(in.normals.size(), 9u);
+    EXPECT_EQ(in.influenceStride, 4);
+    EXPECT_EQ(in.palette.size(), 2u);
+    EXPECT_EQ(in.bones.size(), 2u * 4u);  // the table covers vertices 0 and 1 only
+    EXPECT_EQ(in.bones[4], 1);            // vertex 1: bone 1 (weight 3) before bone 0 (weight 1)
+    EXPECT_FLOAT_EQ(in.weights[4], 0.75f);
+    const auto stamp = d.inputStamp();
+
+    EXPECT_FALSE(d.update(*r.mesh, Output::InputsOnly));  // nothing changed
+    r.bones[1]->setTranslation(0, 1, 0);                    // the pose: the palette only
+    EXPECT_TRUE(d.update(*r.mesh, Output::InputsOnly));
+    EXPECT_EQ(d.inputStamp(), stamp);
+    r.mesh->addTransform(r.bones[1], 1, 2, 1);  // the table: static inputs rebuilt
+    EXPECT_TRUE(d.update(*r.mesh, Output::InputsOnly));
+    EXPECT_GT(d.inputStamp(), stamp);
+    EXPECT_EQ(d.skinInputs().bones.size(), 3u * 4u);
+
+    // Switching the output recomputes, with the same result as a fresh deformer.
+    EXPECT_TRUE(d.update(*r.mesh, Output::Vertices));
+    MeshDeformer fresh;
+    ASSERT_TRUE(fresh.update(*r.mesh));
+    EXPECT_EQ(d.vertices().positions, fresh.vertices().positions);
+    EXPECT_EQ(d.vertices().normals, fresh.vertices().normals);
+    EXPECT_FALSE(d.update(*r.mesh, Output::Vertices));
+    EXPECT_TRUE(d.update(*r.mesh, Output::InputsOnly));
+}

@@ -72,6 +72,9 @@ struct RenderStats {
     std::uint64_t bufferUploads = 0;
     std::uint64_t textureUploads = 0;
     std::uint64_t frames = 0;       ///< releaseTarget calls that flushed work
+    /// Compute dispatches of skinning/morphing (Graphics3D::SKINNING_COMPUTE):
+    /// one per deformed SkinnedMesh, one per morphed attribute.
+    std::uint64_t computeDispatches = 0;
     std::uint64_t liveBuffers = 0;  ///< GPU mirrors of buffers alive now
     std::uint64_t liveTextures = 0; ///< GPU mirrors of images alive now
     std::uint64_t deviceMemoryBytes = 0;  ///< bytes allocated now
