@@ -122,13 +122,20 @@ inline void checkRoundTripOnce(std::span<const std::uint8_t> bytes) {
 
     std::vector<m3g::Object3D*> roots;
     for (const auto& r : first.roots) roots.push_back(r.get());
+    // A file with no objects loads as an empty list, which must save as an
+    // empty file. An empty vector's data() may be null, which the C++ API reads
+    // as Java null (docs/conventions.md): give the span a non-null pointer.
+    // (The fuzzer's first round-trip finding was this harness mistake.)
+    m3g::Object3D* const none = nullptr;
+    const std::span<m3g::Object3D* const> rootSpan =
+        roots.empty() ? std::span<m3g::Object3D* const>(&none, 0) : std::span<m3g::Object3D* const>(roots);
     for (bool compress : {false, true}) {
         const std::string mode = compress ? "zlib" : "plain";
         m3g::SaverOptions so;
         so.compress = compress;
         std::vector<std::uint8_t> saved;
         try {
-            saved = m3g::Saver::save(std::span<m3g::Object3D* const>(roots), so);
+            saved = m3g::Saver::save(rootSpan, so);
         } catch (const std::exception& e) {
             throw Failure{"save (" + mode + ") of a loaded graph failed: " + e.what()};
         }

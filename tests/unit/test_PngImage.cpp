@@ -223,6 +223,25 @@ TEST(PngImage, OversizedDimensionsFailWithoutLargeAllocation) {
     EXPECT_THROW(decodePng(zero), IOException);
 }
 
+// Fuzzing finding (docs/reliability.md): an ancillary chunk declaring more
+// bytes than the file holds made libpng allocate and clear the declared
+// length (1.7 GB for a 250-byte file) before noticing the truncation. The
+// chunk list is checked first; the error names the chunk and its offset.
+TEST(PngImage, ChunkLongerThanTheFileFailsBeforeDecoding) {
+    const Bytes good = samplePng();
+    for (std::uint32_t declared : {0x69545874u, 0x7FFFFFFFu, 100u}) {
+        Bytes b(good.begin(), good.begin() + 33);  // signature + IHDR (8 + 25)
+        const Bytes text = {0, 0, 0, 0, 't', 'E', 'X', 't', 'a', 'b', 'c'};
+        b.insert(b.end(), text.begin(), text.end());
+        putBE32(b, 33, declared);
+        const std::string m = pngFailure(b);
+        EXPECT_NE(m.find("tex.png: invalid PNG: truncated: chunk 'tEXt' at byte 33 declares " +
+                         std::to_string(declared) + " data bytes but the file has only 3 left"),
+                  std::string::npos)
+            << m;
+    }
+}
+
 TEST(PngImage, TruncationAtEveryLength) {
     const Bytes b = samplePng();
     ASSERT_NO_THROW(decodePng(b));
