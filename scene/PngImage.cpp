@@ -3,6 +3,7 @@
 
 #include <csetjmp>
 #include <cstring>
+#include <string>
 
 #include <png.h>
 
@@ -48,21 +49,42 @@ struct PngInfo {
     std::size_t rawRowBytes;  // before transforms, without the filter byte
 };
 
-// Sum of the IDAT chunk lengths (a deflate stream inflates to at most about
-// 1032 times its size, so this bounds the pixels a file can really carry).
-std::uint64_t idatBytes(std::span<const std::uint8_t> d) {
-    std::uint64_t sum = 0;
+// The chunk list up to IEND, before libpng sees it.
+struct ChunkScan {
+    /// Sum of the IDAT chunk lengths (a deflate stream inflates to at most
+    /// about 1032 times its size, so this bounds the pixels a file can carry).
+    std::uint64_t idatBytes = 0;
+    /// The first chunk whose declared length runs past the end of the data,
+    /// described for the error message; empty if none. libpng allocates and
+    /// clears an ancillary chunk's declared length before reading it, so a
+    /// 100-byte file declaring a 1.7 GB tEXt chunk would cost that much memory
+    /// before the truncation is found (fuzzing finding, docs/reliability.md).
+    std::string overrun;
+};
+
+ChunkScan scanChunks(std::span<const std::uint8_t> d) {
+    ChunkScan scan;
     std::size_t pos = 8;
     while (d.size() - pos >= 8) {
         const std::uint32_t len = (std::uint32_t(d[pos]) << 24) | (std::uint32_t(d[pos + 1]) << 16) |
                                   (std::uint32_t(d[pos + 2]) << 8) | d[pos + 3];
-        if (std::memcmp(d.data() + pos + 4, "IDAT", 4) == 0) sum += len;
-        if (std::memcmp(d.data() + pos + 4, "IEND", 4) == 0) break;
+        const std::uint8_t* type = d.data() + pos + 4;
         const std::uint64_t next = std::uint64_t(pos) + 12 + len;
-        if (next > d.size()) break;
+        if (next > d.size()) {
+            std::string name;
+            for (int i = 0; i < 4; ++i) {
+                const char c = static_cast<char>(type[i]);
+                name += (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') ? c : '?';
+            }
+            scan.overrun = str("truncated: chunk '", name, "' at byte ", pos, " declares ", len,
+                               " data bytes but the file has only ", d.size() - pos - 8, " left after its header");
+            break;
+        }
+        if (std::memcmp(type, "IDAT", 4) == 0) scan.idatBytes += len;
+        if (std::memcmp(type, "IEND", 4) == 0) break;
         pos = static_cast<std::size_t>(next);
     }
-    return sum;
+    return scan;
 }
 
 // Phase 1: header and transforms. Returns false on error (message in st).
@@ -121,6 +143,8 @@ struct PngHandles {
 PngImage decodePng(std::span<const std::uint8_t> data, const std::string& context) {
     auto fail = [&](const std::string& why) -> void { throw IOException(context + ": " + why); };
     if (data.size() < 8 || png_sig_cmp(data.data(), 0, 8) != 0) fail("not a PNG image (bad signature)");
+    const ChunkScan chunks = scanChunks(data);
+    if (!chunks.overrun.empty()) fail(str("invalid PNG: ", chunks.overrun));
 
     PngState st{data.data(), data.size(), 0, {0}};
     PngHandles h;
@@ -143,7 +167,7 @@ PngImage decodePng(std::span<const std::uint8_t> data, const std::string& contex
                  kPngMaxDecodedBytes, ")"));
 
     const std::uint64_t rawTotal = (std::uint64_t(pi.rawRowBytes) + 1) * pi.height;
-    const std::uint64_t idat = idatBytes(data);
+    const std::uint64_t idat = chunks.idatBytes;
     if (rawTotal > idat * 1032 + 65536)
         fail(str("truncated or corrupt PNG: ", pi.width, "x", pi.height, " needs ", rawTotal,
                  " bytes of image data but the IDAT chunks hold only ", idat, " compressed bytes"));

@@ -6,6 +6,8 @@
 #include <algorithm>
 
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -88,6 +90,20 @@ inline Bytes headerData(std::uint8_t major, std::uint8_t minor, std::uint8_t has
     return w.b;
 }
 
+/// Writes `bytes` into the folder named by the environment variable
+/// M3G_FUZZ_SEED_DIR, if set, as <FNV-1a 64 hash><ext>: scripts/fuzz runs the
+/// loader tests this way to collect their hand-made files as fuzz seeds.
+inline void dumpFuzzSeed(const Bytes& bytes, const char* ext) {
+    const char* dir = std::getenv("M3G_FUZZ_SEED_DIR");
+    if (!dir || !*dir || bytes.empty()) return;
+    std::uint64_t h = 14695981039346656037ull;
+    for (std::uint8_t c : bytes) h = (h ^ c) * 1099511628211ull;
+    char name[17];
+    std::snprintf(name, sizeof name, "%016llx", static_cast<unsigned long long>(h));
+    std::ofstream out(std::filesystem::path(dir) / (std::string(name) + ext), std::ios::binary);
+    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+}
+
 /// A whole file. TotalFileSize is computed unless overridden.
 struct FileSpec {
     std::uint8_t major = 1, minor = 0;
@@ -113,6 +129,7 @@ struct FileSpec {
         Bytes out = kIdentifier;
         out.insert(out.end(), h.begin(), h.end());
         out.insert(out.end(), rest.begin(), rest.end());
+        dumpFuzzSeed(out, ".m3g");
         return out;
     }
 };

@@ -13,6 +13,7 @@
 #include <m3g/Exception.h>
 
 #include "M3GTestBytes.h"
+#include "PngTestBytes.h"
 #include "PngImage.h"
 
 using m3g::IOException;
@@ -22,62 +23,8 @@ using m3g::detail::PngImage;
 using namespace m3g::detail;
 using m3gtest::Bytes;
 
-namespace {
-
-struct PngSpec {
-    int width = 3, height = 2;
-    int colorType = PNG_COLOR_TYPE_GRAY;
-    int bitDepth = 8;
-    bool interlace = false;
-    Bytes rows;                     // packed PNG rows (no filter bytes), height × rowbytes
-    std::vector<png_color> palette;
-    Bytes trnsAlpha;                // palette tRNS
-    bool trnsColor = false;
-    png_color_16 trns{};            // grey / RGB tRNS
-    double gamma = 0;               // 0 = no gAMA chunk
-};
-
-void writeCb(png_structp png, png_bytep data, png_size_t n) {
-    auto* out = static_cast<Bytes*>(png_get_io_ptr(png));
-    out->insert(out->end(), data, data + n);
-}
-
-// Writes with libpng's writer. Only POD locals across setjmp.
-bool writeImpl(const PngSpec* s, Bytes* out, png_bytepp rows) {
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-    png_infop info = png_create_info_struct(png);
-    if (setjmp(png_jmpbuf(png))) {
-        png_destroy_write_struct(&png, &info);
-        return false;
-    }
-    png_set_write_fn(png, out, writeCb, nullptr);
-    png_set_IHDR(png, info, static_cast<png_uint_32>(s->width), static_cast<png_uint_32>(s->height), s->bitDepth,
-                 s->colorType, s->interlace ? PNG_INTERLACE_ADAM7 : PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-                 PNG_FILTER_TYPE_DEFAULT);
-    if (!s->palette.empty())
-        png_set_PLTE(png, info, s->palette.data(), static_cast<int>(s->palette.size()));
-    if (!s->trnsAlpha.empty())
-        png_set_tRNS(png, info, s->trnsAlpha.data(), static_cast<int>(s->trnsAlpha.size()), nullptr);
-    if (s->trnsColor) png_set_tRNS(png, info, nullptr, 0, &s->trns);
-    if (s->gamma > 0) png_set_gAMA(png, info, s->gamma);
-    png_write_info(png, info);
-    png_write_image(png, rows);
-    png_write_end(png, info);
-    png_destroy_write_struct(&png, &info);
-    return true;
-}
-
-Bytes writePng(const PngSpec& s) {
-    const std::size_t rowBytes = s.rows.size() / static_cast<std::size_t>(s.height);
-    std::vector<png_bytep> rows;
-    for (int y = 0; y < s.height; ++y)
-        rows.push_back(const_cast<png_bytep>(s.rows.data()) + static_cast<std::size_t>(y) * rowBytes);
-    Bytes out;
-    EXPECT_TRUE(writeImpl(&s, &out, rows.data()));
-    return out;
-}
-
-}  // namespace
+using m3gtest::PngSpec;
+using m3gtest::writePng;
 
 TEST(PngImage, Grey8IsLuminance) {
     PngSpec s;
@@ -274,6 +221,25 @@ TEST(PngImage, OversizedDimensionsFailWithoutLargeAllocation) {
     putBE32(zero, 16, 0);
     fixCrc(zero, 8);
     EXPECT_THROW(decodePng(zero), IOException);
+}
+
+// Fuzzing finding (docs/reliability.md): an ancillary chunk declaring more
+// bytes than the file holds made libpng allocate and clear the declared
+// length (1.7 GB for a 250-byte file) before noticing the truncation. The
+// chunk list is checked first; the error names the chunk and its offset.
+TEST(PngImage, ChunkLongerThanTheFileFailsBeforeDecoding) {
+    const Bytes good = samplePng();
+    for (std::uint32_t declared : {0x69545874u, 0x7FFFFFFFu, 100u}) {
+        Bytes b(good.begin(), good.begin() + 33);  // signature + IHDR (8 + 25)
+        const Bytes text = {0, 0, 0, 0, 't', 'E', 'X', 't', 'a', 'b', 'c'};
+        b.insert(b.end(), text.begin(), text.end());
+        putBE32(b, 33, declared);
+        const std::string m = pngFailure(b);
+        EXPECT_NE(m.find("tex.png: invalid PNG: truncated: chunk 'tEXt' at byte 33 declares " +
+                         std::to_string(declared) + " data bytes but the file has only 3 left"),
+                  std::string::npos)
+            << m;
+    }
 }
 
 TEST(PngImage, TruncationAtEveryLength) {

@@ -1,0 +1,5 @@
+// libFuzzer target (issue 8, "Fuzzing"): Loader::load(bytes) on .m3g bytes.
+// The rules are m3gfuzz::checkLoader in FuzzChecks.h; scripts/fuzz runs it.
+#include "FuzzMain.h"
+
+M3G_FUZZ_TARGET(m3gfuzz::checkLoader)
