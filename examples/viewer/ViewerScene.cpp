@@ -76,6 +76,7 @@ void ViewerScene::setup(int width, int height) {
         if (auto* c = dynamic_cast<Camera*>(o.get())) cameras_.emplace_back(c);
         if (auto* a = dynamic_cast<AnimationController*>(o.get())) controllers_.emplace_back(a);
         if (auto* i = dynamic_cast<Image2D*>(o.get())) images_.emplace_back(i);
+        if (auto* t = dynamic_cast<AnimationTrack*>(o.get())) tracks_.push_back({Ref<AnimationTrack>(t), t->getController()});
         if (auto* k = dynamic_cast<KeyframeSequence*>(o.get()))
             animationLength_ = std::max(animationLength_, k->getDuration());
     }

@@ -36,6 +36,13 @@ public:
     const std::vector<m3g::Ref<m3g::Camera>>& cameras() const noexcept { return cameras_; }
     const std::vector<m3g::Ref<m3g::AnimationController>>& controllers() const noexcept { return controllers_; }
     const std::vector<m3g::Ref<m3g::Image2D>>& images() const noexcept { return images_; }
+    /// Every AnimationTrack in file order, with the controller it had when
+    /// loaded (what enabling it again restores).
+    struct Track {
+        m3g::Ref<m3g::AnimationTrack> track;
+        m3g::Ref<m3g::AnimationController> controller;
+    };
+    const std::vector<Track>& tracks() const noexcept { return tracks_; }
     /// Longest keyframe sequence duration in ms (0: nothing animates).
     int animationLength() const noexcept { return animationLength_; }
 
@@ -69,6 +76,7 @@ private:
     std::vector<m3g::Ref<m3g::Camera>> cameras_;
     std::vector<m3g::Ref<m3g::AnimationController>> controllers_;
     std::vector<m3g::Ref<m3g::Image2D>> images_;
+    std::vector<Track> tracks_;
     int animationLength_ = 0;
     m3g::Ref<m3g::Camera> orbitCamera_;
     m3g::Ref<m3g::Light> headlight_;

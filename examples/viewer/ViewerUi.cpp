@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <set>
+#include <string>
 
 #include <imgui.h>
 #include <nlohmann/json.hpp>
@@ -27,6 +29,16 @@ const char* formatName(int format) {
         case Image2D::RGBA: return "RGBA";
         default: return "?";
     }
+}
+
+const char* propertyName(int property) {
+    static const char* names[] = {"ALPHA",          "AMBIENT_COLOR", "COLOR",         "CROP",         "DENSITY",
+                                  "DIFFUSE_COLOR",  "EMISSIVE_COLOR", "FAR_DISTANCE", "FIELD_OF_VIEW", "INTENSITY",
+                                  "MORPH_WEIGHTS",  "NEAR_DISTANCE", "ORIENTATION",   "PICKABILITY",  "SCALE",
+                                  "SHININESS",      "SPECULAR_COLOR", "SPOT_ANGLE",   "SPOT_EXPONENT", "TRANSLATION",
+                                  "VISIBILITY"};
+    const int i = property - AnimationTrack::ALPHA;
+    return i >= 0 && i < static_cast<int>(std::size(names)) ? names[i] : "?";
 }
 
 // Where a panel starts (fractions of the window), until the user moves it.
@@ -160,6 +172,24 @@ void animation(ViewerState& state) {
         ImGui::PopID();
     }
     if (controllers.empty()) ImGui::TextDisabled("No AnimationController in the file.");
+    // Tracks: disabling one detaches it from its controller (setController(null)).
+    const auto& tracks = scene.tracks();
+    if (!tracks.empty() && ImGui::TreeNode("tracks", "AnimationTracks (%zu)", tracks.size())) {
+        for (std::size_t i = 0; i < tracks.size(); ++i) {
+            AnimationTrack& t = *tracks[i].track;
+            ImGui::PushID(static_cast<int>(1000 + i));
+            bool on = t.getController() != nullptr;
+            if (ImGui::Checkbox("", &on)) t.setController(on ? tracks[i].controller.get() : nullptr);
+            ImGui::SameLine();
+            const auto c = std::find(controllers.begin(), controllers.end(), tracks[i].controller);
+            Ref<KeyframeSequence> k = t.getKeyframeSequence();
+            ImGui::Text("track %zu: %s, %d keyframes over %d ms, controller %s", i, propertyName(t.getTargetProperty()),
+                        k ? k->getKeyframeCount() : 0, k ? k->getDuration() : 0,
+                        c == controllers.end() ? "none" : std::to_string(c - controllers.begin()).c_str());
+            ImGui::PopID();
+        }
+        ImGui::TreePop();
+    }
     ImGui::End();
 }
 
@@ -206,7 +236,12 @@ void statsAndDebug(ViewerState& state) {
     ImGui::Text("submeshes %d, triangles %d, vertices %d", s.submeshes, s.triangles, s.vertices);
     ImGui::Text("draws %llu, frame %.2f ms (render %.2f ms)", static_cast<unsigned long long>(state.drawsPerFrame),
                 state.frameMs, state.renderMs);
-    ImGui::Text("skinning: CPU; device: %s", vk::currentDevice().name.c_str());
+    ImGui::Text("skinning: %s; device: %s",
+                Graphics3D::getInstance()->getSkinningMode() == Graphics3D::SKINNING_COMPUTE ? "compute shader" : "CPU",
+                vk::currentDevice().name.c_str());
+    int compute = Graphics3D::getInstance()->getSkinningMode() == Graphics3D::SKINNING_COMPUTE ? 1 : 0;
+    if (ImGui::Combo("skinning", &compute, "CPU\0compute shader\0"))
+        Graphics3D::getInstance()->setSkinningMode(compute ? Graphics3D::SKINNING_COMPUTE : Graphics3D::SKINNING_CPU);
     ImGui::Separator();
     // Camera choice: the orbit camera or any Camera of the file.
     std::string current = scene.cameraIndex() < 0 ? "orbit (viewer)" : "camera " + std::to_string(scene.cameraIndex());
