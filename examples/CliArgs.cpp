@@ -50,6 +50,16 @@ std::optional<int> parseInt(std::string_view text) {
     return value;
 }
 
+bool parseSize(std::string_view text, int& width, int& height) {
+    const auto x = text.find('x');
+    if (x == std::string_view::npos) return false;
+    const auto w = parseInt(text.substr(0, x)), h = parseInt(text.substr(x + 1));
+    if (!w || !h || *w <= 0 || *h <= 0) return false;
+    width = *w;
+    height = *h;
+    return true;
+}
+
 std::optional<float> parseFloat(std::string_view text) {
     if (text.empty()) return std::nullopt;
     std::string_view digits = text;

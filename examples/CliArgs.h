@@ -47,6 +47,10 @@ CliArgs parseCliArgs(int argc, const char* const* argv);
 /// has other characters or is out of range.
 std::optional<int> parseInt(std::string_view text);
 
+/// Parses an image size "WxH" (both positive ints) into width and height;
+/// false (and both left alone) otherwise.
+bool parseSize(std::string_view text, int& width, int& height);
+
 /// Parses a whole finite decimal float (optional sign, as std::from_chars
 /// reads it); nullopt otherwise.
 std::optional<float> parseFloat(std::string_view text);

@@ -10,16 +10,6 @@ namespace m3gcli {
 
 namespace {
 
-bool parseSize(std::string_view text, int& w, int& h) {
-    const auto x = text.find('x');
-    if (x == std::string_view::npos) return false;
-    auto a = parseInt(text.substr(0, x)), b = parseInt(text.substr(x + 1));
-    if (!a || !b || *a <= 0 || *b <= 0) return false;
-    w = *a;
-    h = *b;
-    return true;
-}
-
 int hexDigit(char c) {
     if (c >= '0' && c <= '9') return c - '0';
     c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));

@@ -43,16 +43,10 @@ int cmdBenchRender(std::span<const std::string_view> args) {
     int width = 320, height = 240, frames = 100;
     for (std::size_t i = 0; i < args.size(); ++i) {
         if (args[i] == "--size" && i + 1 < args.size()) {
-            const std::string_view v = args[++i];
-            const auto x = v.find('x');
-            auto w = x == std::string_view::npos ? std::nullopt : parseInt(v.substr(0, x));
-            auto h = x == std::string_view::npos ? std::nullopt : parseInt(v.substr(x + 1));
-            if (!w || !h || *w <= 0 || *h <= 0) {
+            if (!parseSize(args[++i], width, height)) {
                 std::fprintf(stderr, "m3g: bench render: --size takes WxH\n");
                 return 2;
             }
-            width = *w;
-            height = *h;
         } else if (args[i] == "--frames" && i + 1 < args.size()) {
             auto n = parseInt(args[++i]);
             if (!n || *n <= 0) {

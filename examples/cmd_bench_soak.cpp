@@ -45,15 +45,7 @@ int cmdBenchSoak(std::span<const std::string_view> args) {
         else if (a == "--report") ok = number(o.reportEvery);
         else if (a == "--warmup") ok = number(o.warmupCycles);
         else if (a == "--size") {
-            const std::string_view v = i + 1 < args.size() ? args[++i] : std::string_view();
-            const auto x = v.find('x');
-            auto w = x == std::string_view::npos ? std::nullopt : parseInt(v.substr(0, x));
-            auto h = x == std::string_view::npos ? std::nullopt : parseInt(v.substr(x + 1));
-            ok = w && h && *w > 0 && *h > 0;
-            if (ok) {
-                o.width = *w;
-                o.height = *h;
-            }
+            ok = i + 1 < args.size() && parseSize(args[++i], o.width, o.height);
         } else if (!a.empty() && a[0] == '-') ok = false;
         else if (o.file.empty()) o.file = a;
         else ok = false;

@@ -734,21 +734,7 @@ void Renderer::release(Graphics3D& g3d) {
     const bool readback = window_ ? window_->takeReadbackRequest() : true;
     // A window screenshot with its overlay reads the swapchain image instead.
     bool readbackBgra = readback && window_ && window_->readbackWithOverlay();
-    if (readback && !readbackBgra) {
-        VkBufferImageCopy copy{};
-        copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        copy.imageExtent = {width_, height_, 1};
-        vkCmdCopyImageToBuffer(cmd_, colorImage, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, transfer_.buffer, 1, &copy);
-        VkMemoryBarrier2 hostRead{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-        hostRead.srcStageMask = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
-        hostRead.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-        hostRead.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-        hostRead.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-        dep.memoryBarrierCount = 1;
-        dep.pMemoryBarriers = &hostRead;
-        vkCmdPipelineBarrier2(cmd_, &dep);
-    }
+    if (readback && !readbackBgra) copyToHost(colorImage);
     const bool presenting = window_ && recordPresent(*window_, readbackBgra);
     if (readbackBgra && !presenting) readbackBgra = false;
     check(vkEndCommandBuffer(cmd_), "vkEndCommandBuffer");
@@ -776,19 +762,8 @@ void Renderer::release(Graphics3D& g3d) {
     // A window screenshot that could not be taken stays not ready.
     if (!readback || (window_ && window_->readbackWithOverlay() && !readbackBgra)) return;
     if (window_) window_->markReadback();
-    if (readbackBgra) {
-        // The swapchain's channel order into 0xAARRGGBB.
-        const bool bgra = window_->swapchain().format() == VK_FORMAT_B8G8R8A8_UNORM;
-        const auto* src = static_cast<const std::uint8_t*>(transfer_.mapped);
-        auto px = window_->pixels();
-        for (std::size_t i = 0; i < px.size(); ++i) {
-            const std::uint8_t* p = src + i * 4;
-            const std::uint32_t r = bgra ? p[2] : p[0], g = p[1], b = bgra ? p[0] : p[2];
-            px[i] = 0xFF000000u | (r << 16) | (g << 8) | b;
-        }
-        return;
-    }
-
+    // Texels are RGBA, except a swapchain image's (the window with its overlay).
+    const bool bgra = readbackBgra && window_->swapchain().format() == VK_FORMAT_B8G8R8A8_UNORM;
     const auto* src = static_cast<const std::uint8_t*>(transfer_.mapped);
     const std::size_t n = static_cast<std::size_t>(width_) * height_;
     if (Image2D* image = g3d.targetImage()) {
@@ -802,10 +777,27 @@ void Renderer::release(Graphics3D& g3d) {
         }
     } else if (Graphics* graphics = g3d.targetGraphics()) {
         auto px = graphics->pixels();
+        const int red = bgra ? 2 : 0, blue = bgra ? 0 : 2;
         for (std::size_t i = 0; i < std::min(n, px.size()); ++i)
-            px[i] = 0xFF000000u | (static_cast<std::uint32_t>(src[i * 4]) << 16) |
-                    (static_cast<std::uint32_t>(src[i * 4 + 1]) << 8) | src[i * 4 + 2];
+            px[i] = 0xFF000000u | (static_cast<std::uint32_t>(src[i * 4 + red]) << 16) |
+                    (static_cast<std::uint32_t>(src[i * 4 + 1]) << 8) | src[i * 4 + blue];
     }
+}
+
+void Renderer::copyToHost(VkImage image) {
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    copy.imageExtent = {width_, height_, 1};
+    vkCmdCopyImageToBuffer(cmd_, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, transfer_.buffer, 1, &copy);
+    VkMemoryBarrier2 hostRead{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+    hostRead.srcStageMask = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
+    hostRead.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+    hostRead.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+    hostRead.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dep.memoryBarrierCount = 1;
+    dep.pMemoryBarriers = &hostRead;
+    vkCmdPipelineBarrier2(cmd_, &dep);
 }
 
 bool Renderer::recordPresent(WindowTarget& window, bool& readback) {
@@ -842,19 +834,7 @@ bool Renderer::recordPresent(WindowTarget& window, bool& readback) {
         // The presented image, overlay included (a screenshot of the window).
         barrier(cmd_, image, VK_IMAGE_ASPECT_COLOR_BIT, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, stage, access,
                 VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
-        VkBufferImageCopy copy{};
-        copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        copy.imageExtent = {width_, height_, 1};
-        vkCmdCopyImageToBuffer(cmd_, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, transfer_.buffer, 1, &copy);
-        VkMemoryBarrier2 hostRead{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-        hostRead.srcStageMask = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
-        hostRead.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-        hostRead.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-        hostRead.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-        dep.memoryBarrierCount = 1;
-        dep.pMemoryBarriers = &hostRead;
-        vkCmdPipelineBarrier2(cmd_, &dep);
+        copyToHost(image);
         layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
         stage = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
         access = 0;

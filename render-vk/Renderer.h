@@ -56,6 +56,9 @@ private:
     /// With `readback`, also copies the presented image to transfer_ (reset
     /// to false when the surface's size is not the target's).
     bool recordPresent(WindowTarget& window, bool& readback);
+    /// Records the copy of width_ x height_ texels of `image` (in
+    /// TRANSFER_SRC layout) into transfer_, visible to the host after the fence.
+    void copyToHost(VkImage image);
     void ensureTargetImages(std::uint32_t width, std::uint32_t height, VkSampleCountFlagBits samples);
     void applyViewport(Graphics3D& g3d);
     DrawUniforms& allocUniforms(VkDescriptorSet& set, std::uint32_t& offset);

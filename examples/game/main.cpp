@@ -78,12 +78,8 @@ int main(int argc, char** argv) {
                 if (!f || *f <= 0) throw std::invalid_argument("--fps takes a positive number");
                 fps = *f;
             } else if (a == "--size") {
-                const std::string v = value();
-                const auto x = v.find('x');
-                const auto w = m3gcli::parseInt(v.substr(0, x)), h = x == std::string::npos ? std::nullopt : m3gcli::parseInt(v.substr(x + 1));
-                if (!w || !h || *w <= 0 || *h <= 0) throw std::invalid_argument("--size takes WxH, e.g. 320x240");
-                width = *w;
-                height = *h;
+                if (!m3gcli::parseSize(value(), width, height))
+                    throw std::invalid_argument("--size takes WxH, e.g. 320x240");
             } else if (a == "-o") {
                 pattern = value();
             } else if (a == "--keys") {

@@ -179,7 +179,8 @@ int Input::apply(const ScriptCommand& c, const std::function<void()>& frame,
                 state_.resetViewRequest = false;
             }
         } else if (c.name == "camera") {
-            if (state_.scene) state_.scene->useCamera(std::stoi(c.args[0]));
+            if (state_.scene && !state_.scene->useCamera(std::stoi(c.args[0])))
+                return fail(state_.scene->cameraError());
         } else if (c.name == "screenshot") screenshot(c.args[0], false);
         else if (c.name == "screenshot-ui") screenshot(c.args[0], true);
         else if (c.name == "expect-pick") {

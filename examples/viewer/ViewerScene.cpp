@@ -72,8 +72,8 @@ void ViewerScene::setup(int width, int height) {
     prepared_ = image ? imageScene(loaded_) : m3gcli::prepareScene(loaded_, width, height);
     World& w = *prepared_.world;
     countMeshes(w, stats_);
+    for (Camera* c : m3gcli::camerasInFileOrder(loaded_)) cameras_.emplace_back(c);
     for (const auto& o : loaded_.objects) {
-        if (auto* c = dynamic_cast<Camera*>(o.get())) cameras_.emplace_back(c);
         if (auto* a = dynamic_cast<AnimationController*>(o.get())) controllers_.emplace_back(a);
         if (auto* i = dynamic_cast<Image2D*>(o.get())) images_.emplace_back(i);
         if (auto* t = dynamic_cast<AnimationTrack*>(o.get())) tracks_.push_back({Ref<AnimationTrack>(t), t->getController()});
@@ -82,8 +82,10 @@ void ViewerScene::setup(int width, int height) {
     }
     // A camera the auto-framing added is not in the file but is the view.
     if (Ref<Camera> active = w.getActiveCamera();
-        active && std::find(cameras_.begin(), cameras_.end(), active) == cameras_.end())
+        active && std::find(cameras_.begin(), cameras_.end(), active) == cameras_.end()) {
         cameras_.insert(cameras_.begin(), active);
+        autoCamera_ = true;
+    }
 
     orbitCamera_ = Ref<Camera>(new Camera());
     w.addChild(orbitCamera_.get());
@@ -93,16 +95,29 @@ void ViewerScene::setup(int width, int height) {
     hasOwnLight_ = m3gcli::hasContributingLight(w);
     headlight_->setRenderingEnable(!hasOwnLight_);
     resetView(width, height);
-    // The file's view first (its active camera), as the reference renders.
+    // The file's view first (its active camera, already set), as the
+    // reference renders; the orbit camera when there is none.
     const auto it = std::find(cameras_.begin(), cameras_.end(), w.getActiveCamera());
-    useCamera(it != cameras_.end() && !image ? static_cast<int>(it - cameras_.begin()) : -1);
-    if (image) useCamera(0);
+    if (it != cameras_.end()) cameraIndex_ = static_cast<int>(it - cameras_.begin());
+    else useCamera(-1);
 }
 
-void ViewerScene::useCamera(int index) {
-    if (index < -1 || index >= static_cast<int>(cameras_.size())) index = -1;
+bool ViewerScene::useCamera(int index) {
+    cameraError_.clear();
+    try {
+        if (index >= 0 && !(autoCamera_ && index == 0)) {
+            m3gcli::useCamera(prepared_, loaded_, index - (autoCamera_ ? 1 : 0));
+            cameraIndex_ = index;
+            return true;
+        }
+        if (index >= static_cast<int>(cameras_.size())) throw std::out_of_range("no camera " + std::to_string(index));
+    } catch (const std::exception& e) {
+        cameraError_ = e.what();
+        index = -1;
+    }
     cameraIndex_ = index;
-    prepared_.world->setActiveCamera(index < 0 ? orbitCamera_.get() : cameras_[static_cast<std::size_t>(index)].get());
+    prepared_.world->setActiveCamera(index < 0 ? orbitCamera_.get() : cameras_.front().get());
+    return cameraError_.empty();
 }
 
 void ViewerScene::resetView(int width, int height) {

@@ -46,9 +46,14 @@ public:
     /// Longest keyframe sequence duration in ms (0: nothing animates).
     int animationLength() const noexcept { return animationLength_; }
 
-    /// Which camera renders: -1 the orbit camera, else cameras()[i].
-    void useCamera(int index);
+    /// Which camera renders: -1 the orbit camera, else cameras()[i] (a file
+    /// camera outside the World is added to it, as m3gcli::useCamera does).
+    /// False, with the reason in cameraError(), when that camera cannot
+    /// render this World (out of range, or in another scene graph); the
+    /// orbit camera renders then.
+    bool useCamera(int index);
     int cameraIndex() const noexcept { return cameraIndex_; }
+    const std::string& cameraError() const noexcept { return cameraError_; }
     /// Puts the orbit camera back on the auto-framed view of the scene.
     void resetView(int width, int height);
     OrbitCamera& orbit() noexcept { return orbit_; }
@@ -82,6 +87,8 @@ private:
     m3g::Ref<m3g::Light> headlight_;
     bool hasOwnLight_ = false;
     int cameraIndex_ = -1;
+    bool autoCamera_ = false;  // cameras_[0] is the auto-framing camera, not the file's
+    std::string cameraError_;
     OrbitCamera orbit_;
 };
 

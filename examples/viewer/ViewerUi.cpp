@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <iterator>
 #include <set>
@@ -109,14 +110,26 @@ void properties(ViewerState& state) {
         ImGui::End();
         return;
     }
-    // Dumped again every frame: animation changes the values.
+    // Dumped again only when the selection, its revision or the animation
+    // time changed (a World's dump walks the whole scene).
+    struct Cached {
+        std::uint64_t id = 0;
+        std::uint32_t revision = 0;
+        double time = -1.0;
+        nlohmann::ordered_json object;
+    };
+    static Cached cache;
     Object3D* root = state.selected;
-    m3gcli::DumpOptions options;
-    options.maxVertices = 8;
-    options.maxIndices = 24;
-    options.maxKeyframes = 8;
-    const nlohmann::ordered_json doc = nlohmann::ordered_json::parse(m3gcli::dumpJson(std::span<Object3D* const>(&root, 1), options));
-    const nlohmann::ordered_json& o = doc["objects"][0];
+    if (cache.id != root->getObjectId() || cache.revision != root->getRevision() || cache.time != state.timeMs) {
+        m3gcli::DumpOptions options;
+        options.maxVertices = 8;
+        options.maxIndices = 24;
+        options.maxKeyframes = 8;
+        const auto doc =
+            nlohmann::ordered_json::parse(m3gcli::dumpJson(std::span<Object3D* const>(&root, 1), options));
+        cache = {root->getObjectId(), root->getRevision(), state.timeMs, doc["objects"][0]};
+    }
+    const nlohmann::ordered_json& o = cache.object;
     const char* cls = root->getClassName();
     std::string current;
     bool open = false;
@@ -176,14 +189,14 @@ void animation(ViewerState& state) {
     const auto& tracks = scene.tracks();
     if (!tracks.empty() && ImGui::TreeNode("tracks", "AnimationTracks (%zu)", tracks.size())) {
         for (std::size_t i = 0; i < tracks.size(); ++i) {
-            AnimationTrack& t = *tracks[i].track;
+            AnimationTrack& track = *tracks[i].track;
             ImGui::PushID(static_cast<int>(1000 + i));
-            bool on = t.getController() != nullptr;
-            if (ImGui::Checkbox("", &on)) t.setController(on ? tracks[i].controller.get() : nullptr);
+            bool on = track.getController() != nullptr;
+            if (ImGui::Checkbox("", &on)) track.setController(on ? tracks[i].controller.get() : nullptr);
             ImGui::SameLine();
             const auto c = std::find(controllers.begin(), controllers.end(), tracks[i].controller);
-            Ref<KeyframeSequence> k = t.getKeyframeSequence();
-            ImGui::Text("track %zu: %s, %d keyframes over %d ms, controller %s", i, propertyName(t.getTargetProperty()),
+            Ref<KeyframeSequence> k = track.getKeyframeSequence();
+            ImGui::Text("track %zu: %s, %d keyframes over %d ms, controller %s", i, propertyName(track.getTargetProperty()),
                         k ? k->getKeyframeCount() : 0, k ? k->getDuration() : 0,
                         c == controllers.end() ? "none" : std::to_string(c - controllers.begin()).c_str());
             ImGui::PopID();
@@ -253,6 +266,7 @@ void statsAndDebug(ViewerState& state) {
                 scene.useCamera(i);
         ImGui::EndCombo();
     }
+    if (!scene.cameraError().empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", scene.cameraError().c_str());
     if (ImGui::Button("Reset view (R)")) state.resetViewRequest = true;
     ImGui::SameLine();
     if (ImGui::Button("Screenshot")) state.screenshotPath = "m3g-screenshot.png";

@@ -61,13 +61,7 @@ ViewArgs parse(std::span<const std::string_view> args) {
             return *v;
         };
         if (a == "--size") {
-            const std::string_view s = value("--size");
-            const auto x = s.find('x');
-            auto w = x == std::string_view::npos ? std::nullopt : parseInt(s.substr(0, x));
-            auto h = x == std::string_view::npos ? std::nullopt : parseInt(s.substr(x + 1));
-            if (!w || !h || *w <= 0 || *h <= 0) throw CliError("view: --size takes WxH, e.g. 1024x768");
-            r.width = *w;
-            r.height = *h;
+            if (!parseSize(value("--size"), r.width, r.height)) throw CliError("view: --size takes WxH, e.g. 1024x768");
         } else if (a == "--time") r.time = integer("--time");
         else if (a == "--frames") {
             r.frames = integer("--frames");
@@ -122,7 +116,8 @@ void ViewerApp::open(const std::string& request) {
         for (const auto& w : state_.scene->loaded().warnings) state_.warnings.push_back("warning: " + w);
         for (const auto& n : state_.scene->prepared().notes) state_.warnings.push_back(n);
         if (!args_.headlight) state_.scene->setHeadlight(false);
-        if (args_.camera >= -1) state_.scene->useCamera(args_.camera);
+        if (args_.camera >= -1 && !state_.scene->useCamera(args_.camera))
+            state_.warnings.push_back("--camera-index: " + state_.scene->cameraError());
         settings_.lastFile = request;
         glfwSetWindowTitle(window_, ("m3g view: " + request).c_str());
     } catch (const std::exception& e) {

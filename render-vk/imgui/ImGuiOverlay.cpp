@@ -96,16 +96,8 @@ ImGuiOverlay::Impl::~Impl() {
 void ImGuiOverlay::Impl::buildPipeline(VkFormat format) {
     VkDevice device = ctx->device();
     if (pipeline) vkDestroyPipeline(device, pipeline, nullptr);
-    auto module = [&](const std::uint32_t* code, std::size_t bytes) {
-        VkShaderModuleCreateInfo mi{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-        mi.codeSize = bytes;
-        mi.pCode = code;
-        VkShaderModule m = VK_NULL_HANDLE;
-        check(vkCreateShaderModule(device, &mi, nullptr, &m), "vkCreateShaderModule (UI)");
-        return m;
-    };
-    VkShaderModule vert = module(imgui_vert, sizeof(imgui_vert));
-    VkShaderModule frag = module(imgui_frag, sizeof(imgui_frag));
+    VkShaderModule vert = createShaderModule(device, imgui_vert, sizeof(imgui_vert));
+    VkShaderModule frag = createShaderModule(device, imgui_frag, sizeof(imgui_frag));
     VkPipelineShaderStageCreateInfo stages[2]{{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
                                               {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
     stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;

@@ -111,6 +111,18 @@ TEST(CliArgs, ParseInt) {
     EXPECT_FALSE(m3gcli::parseInt("1.5"));
 }
 
+TEST(CliArgs, ParseSize) {
+    int w = 7, h = 9;
+    EXPECT_TRUE(m3gcli::parseSize("320x240", w, h));
+    EXPECT_EQ(w, 320);
+    EXPECT_EQ(h, 240);
+    for (const char* bad : {"320", "x240", "320x", "0x240", "320x-1", "320X240", "3.5x2", "320x240x1"}) {
+        EXPECT_FALSE(m3gcli::parseSize(bad, w, h)) << bad;
+        EXPECT_EQ(w, 320) << bad;  // left alone
+        EXPECT_EQ(h, 240) << bad;
+    }
+}
+
 TEST(CliArgs, ArgvOverload) {
     const char* argv[] = {"m3g", "info", "f.m3g", "--json"};
     const CliArgs a = m3gcli::parseCliArgs(4, argv);
