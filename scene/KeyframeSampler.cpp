@@ -128,6 +128,20 @@ private:
     bool loop_;
 };
 
+/// The segment holding time s: the last of the n keys with time <= s, or
+/// with time < s when `strict` (the left-hand limit at a key).
+int segmentAt(const ValidKeys& keys, int n, double s, bool strict) {
+    int lo = 0, hi = n - 1;
+    while (lo < hi) {
+        const int mid = (lo + hi + 1) / 2;
+        if (strict ? keys.time(mid) < s : keys.time(mid) <= s)
+            lo = mid;
+        else
+            hi = mid - 1;
+    }
+    return lo;
+}
+
 void copyKey(const ValidKeys& keys, int j, int components, std::span<float> out) {
     const float* v = keys.value(j);
     std::copy(v, v + components, out.begin());
@@ -217,15 +231,7 @@ SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<flo
 
     // The last key with time <= s starts the segment (for CONSTANT that is
     // never the last key; for LOOP the last key starts the wrap segment).
-    int lo = 0, hi = n - 1;
-    while (lo < hi) {
-        const int mid = (lo + hi + 1) / 2;
-        if (keys.time(mid) <= s)
-            lo = mid;
-        else
-            hi = mid - 1;
-    }
-    const int j = lo;
+    const int j = segmentAt(keys, n, s, false);
     const int j1 = keys.next(j);
     const double t0 = keys.time(j);
     const double delta = keys.delta(j);
@@ -291,15 +297,7 @@ void sampleKeyframeSlope(const KeyframeView& k, double time, bool fromLeft, std:
         if (fromLeft ? s > keys.time(n - 1) : s >= keys.time(n - 1)) return;
     }
     // The segment: the last key before s (from the left) or at/before s.
-    int lo = 0, hi = n - 1;
-    while (lo < hi) {
-        const int mid = (lo + hi + 1) / 2;
-        if (fromLeft ? keys.time(mid) < s : keys.time(mid) <= s)
-            lo = mid;
-        else
-            hi = mid - 1;
-    }
-    const int j = lo;
+    const int j = segmentAt(keys, n, s, fromLeft);
     const int j1 = keys.next(j);
     const double delta = keys.delta(j);
     if (!(delta > 0.0)) return;
