@@ -29,6 +29,8 @@ enum DrawFlags : std::int32_t {
 enum TexFunc : std::int32_t { TEX_OFF = 0, TEX_REPLACE, TEX_MODULATE, TEX_DECAL, TEX_BLEND, TEX_ADD };
 
 struct alignas(16) DrawUniforms {
+    /// x indexes the shader's one-element array: always 0 (see draw_uniforms.glsl).
+    std::int32_t index[4];
     float modelView[16];
     float projection[16];
     float normalMatrix[16];
@@ -49,12 +51,12 @@ struct alignas(16) DrawUniforms {
     LightUniforms lights[8];
 };
 
-static_assert(offsetof(DrawUniforms, texMatrix) == 192);
-static_assert(offsetof(DrawUniforms, positionScaleBias) == 320);
-static_assert(offsetof(DrawUniforms, matAmbient) == 368);
-static_assert(offsetof(DrawUniforms, texEnv) == 512);
-static_assert(offsetof(DrawUniforms, misc) == 560);
-static_assert(offsetof(DrawUniforms, lights) == 576);
-static_assert(sizeof(DrawUniforms) == 1088);
+static_assert(offsetof(DrawUniforms, texMatrix) == 208);
+static_assert(offsetof(DrawUniforms, positionScaleBias) == 336);
+static_assert(offsetof(DrawUniforms, matAmbient) == 384);
+static_assert(offsetof(DrawUniforms, texEnv) == 528);
+static_assert(offsetof(DrawUniforms, misc) == 576);
+static_assert(offsetof(DrawUniforms, lights) == 592);
+static_assert(sizeof(DrawUniforms) == 1104);
 
 }  // namespace m3g::vk

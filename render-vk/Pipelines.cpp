@@ -73,13 +73,20 @@ VkPipeline Pipelines::get(const PipelineKey& key) {
 }
 
 void Pipelines::prewarm(std::uint8_t samples) {
-    for (std::uint8_t blend = 0; blend < 5; ++blend) get({blend, 0xF, samples});
+    for (std::uint8_t blend = 0; blend < 5; ++blend) {
+        get({blend, 0xF, samples, 0, 0});
+        get({blend, 0xF, samples, 0, 1});  // alpha-tested
+    }
 }
 
 VkPipeline Pipelines::create(const PipelineKey& key) {
     std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
     stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, vert_, "main", nullptr};
-    stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT, frag_, "main", nullptr};
+    // m3g.frag's constant_id 0 (MAY_DISCARD).
+    const VkBool32 mayDiscard = key.discard ? VK_TRUE : VK_FALSE;
+    const VkSpecializationMapEntry entry{0, 0, sizeof(VkBool32)};
+    const VkSpecializationInfo fragSpec{1, &entry, sizeof(mayDiscard), &mayDiscard};
+    stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT, frag_, "main", &fragSpec};
 
     // Five streams: position, normal, colour, texcoord 0, texcoord 1. Strides
     // are dynamic so that a missing array binds a dummy buffer with stride 0.

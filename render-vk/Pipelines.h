@@ -15,8 +15,13 @@ struct PipelineKey {
     std::uint8_t writeMask = 0xF;  ///< VkColorComponentFlags
     std::uint8_t samples = 1;
     std::uint8_t wireframe = 0;  ///< 1: polygon mode LINE (DebugView)
+    /// 1: the fragment shader keeps its discards (alpha threshold, Background
+    /// BORDER). Without them a rasteriser can test depth before shading
+    /// (llvmpipe does), so only draws that need them pay for late depth.
+    std::uint8_t discard = 0;
     std::uint32_t packed() const noexcept {
-        return blend | (writeMask << 4) | (samples << 8) | (static_cast<std::uint32_t>(wireframe) << 16);
+        return blend | (writeMask << 4) | (samples << 8) | (static_cast<std::uint32_t>(wireframe) << 16) |
+               (static_cast<std::uint32_t>(discard) << 17);
     }
 };
 

@@ -468,8 +468,9 @@ void Renderer::clear(Graphics3D& g3d, const Background* background) {
                               static_cast<float>(background->getCropY() + background->getCropHeight()) / ih};
     u.texEnv[0][3] = (repeatX ? 0 : 1) | (repeatY ? 0 : 2);
     const float ndc[4] = {-1.0f, -1.0f, 1.0f, 1.0f};
-    drawQuad(set, offset, textures, PipelineKey{0, 0xF, static_cast<std::uint8_t>(samples_)}, false, false, ndc, 0.0f,
-             texRect);
+    const std::uint8_t border = repeatX && repeatY ? 0 : 1;
+    drawQuad(set, offset, textures, PipelineKey{0, 0xF, static_cast<std::uint8_t>(samples_), 0, border}, false, false,
+             ndc, 0.0f, texRect);
 }
 
 DrawUniforms& Renderer::quadUniforms(const TextureMirror& tex, VkSampler sampler, std::int32_t func,
@@ -656,6 +657,7 @@ void Renderer::drawSubmesh(const detail::RenderQueue& queue, const detail::Rende
     key.writeMask = writeMask(cm);
     key.samples = static_cast<std::uint8_t>(samples_);
     key.wireframe = debug_.wireframe ? 1 : 0;
+    key.discard = u.misc[1] > 0.0f ? 1 : 0;
     bindPipeline(key);
     setDepthState(!cm || cm->isDepthTestEnabled(), !cm || cm->isDepthWriteEnabled(), cm ? cm->getDepthOffsetFactor() : 0.0f,
                   cm ? cm->getDepthOffsetUnits() : 0.0f);
@@ -716,6 +718,7 @@ void Renderer::drawSprite(const detail::RenderQueue& queue, const detail::Render
     key.blend = blendIndex(cm);
     key.writeMask = writeMask(cm);
     key.samples = static_cast<std::uint8_t>(samples_);
+    key.discard = u.misc[1] > 0.0f ? 1 : 0;
     const float ndc[4] = {r.x0, r.y0, r.x1, r.y1};
     const float texRect[4] = {r.s0, r.t0, r.s1, r.t1};
     drawQuad(set, offset, textures, key, !cm || cm->isDepthTestEnabled(), !cm || cm->isDepthWriteEnabled(), ndc,

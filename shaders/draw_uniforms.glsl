@@ -22,7 +22,7 @@ const int F_CLIP_SPACE = 128;     // positions are NDC already (sprites, backgro
 // texEnv.y: texture has colour channels; texEnv.z: texture has alpha;
 // texEnv.w: bit 0 / bit 1 = discard fragments with s / t outside [0, 1] (Background BORDER)
 
-layout(std140, set = 0, binding = 0) uniform DrawUniforms {
+struct DrawData {
     mat4 modelView;
     mat4 projection;        // M3G projection with the Vulkan clip-space fix-up folded in
     mat4 normalMatrix;      // inverse transpose of modelView's 3x3 (in a mat4 for layout)
@@ -41,4 +41,17 @@ layout(std140, set = 0, binding = 0) uniform DrawUniforms {
     ivec4 flags;            // x flag bits, y light count
     vec4 misc;              // x alpha factor, y alpha threshold, z fixed fog depth (>= 0: use it), w unused
     Light lights[8];
-} u;
+};
+
+// Every field is read through draws[index.x] (index.x is always 0), so no
+// load has a constant offset. Mesa 22.3's lavapipe "inlines" UBO values
+// read at constant offsets that decide a branch or a loop count (the light
+// loop, the flag tests) and then compiles a new shader variant at every
+// descriptor bind, that is at every draw, with no cache: ~5 ms and ~300 KB
+// that is never returned per draw. A dynamic index makes those values
+// ordinary data; the index itself decides no branch.
+layout(std140, set = 0, binding = 0) uniform DrawUniforms {
+    ivec4 index;
+    DrawData draws[1];
+} drawBlock;
+#define u drawBlock.draws[drawBlock.index.x]

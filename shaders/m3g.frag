@@ -16,11 +16,16 @@ layout(location = 6) in float inFogDepth;
 
 layout(location = 0) out vec4 outColor;
 
+// False in pipelines of draws with no alpha threshold and no Background
+// BORDER: the discards compile away, so depth can be tested before shading.
+layout(constant_id = 0) const bool MAY_DISCARD = true;
+
 vec4 applyUnit(vec4 cf, int unit, vec4 tc) {
     ivec4 env = u.texEnv[unit];
     vec2 st = tc.xy / tc.w;
-    if (((env.w & 1) != 0 && (st.x < 0.0 || st.x > 1.0)) || ((env.w & 2) != 0 && (st.y < 0.0 || st.y > 1.0)))
-        discard;
+    bool outsideS = (env.w & 1) != 0 && (st.x < 0.0 || st.x > 1.0);
+    bool outsideT = (env.w & 2) != 0 && (st.y < 0.0 || st.y > 1.0);
+    if (MAY_DISCARD && (outsideS || outsideT)) discard;
     vec4 t = texture(textures[unit], st);
     bool hasColor = env.y != 0;
     bool hasAlpha = env.z != 0;
@@ -51,7 +56,7 @@ void main() {
     if (u.texEnv[1].x != 0) color = applyUnit(color, 1, inTex1);
 
     // Alpha test: pass if A >= threshold (off at 0).
-    if (u.misc.y > 0.0 && color.a < u.misc.y) discard;
+    if (MAY_DISCARD && u.misc.y > 0.0 && color.a < u.misc.y) discard;
 
     int fogMode = int(u.fogParams.x);
     if (fogMode != 0) {

@@ -2,9 +2,11 @@
 // animated, rendered and dropped again every 50 frames with immediate-mode
 // draws mixed in. After each reload the GPU mirrors (live buffers, live
 // textures, device memory) must come back to exactly the same values: every
-// mirror of a dropped scene is freed, nothing accumulates. Resident memory is
-// reported, not asserted (allocator behaviour). The long run is
-// `m3g bench soak` (examples/cmd_bench_soak.cpp).
+// mirror of a dropped scene is freed, nothing accumulates. Resident memory
+// is held to a loose bound only (allocators keep what they keep): it catches
+// the kind of growth lavapipe's per-draw shader recompilation caused (about
+// 3.4 MiB per frame here, before draw_uniforms.glsl read its fields through
+// a dynamic index). The long run is `m3g bench soak` (examples/cmd_bench_soak.cpp).
 #include <filesystem>
 
 #include "Soak.h"
@@ -38,6 +40,10 @@ TEST_F(VkTest, SoakGpuMirrorsReturnToTheSameCountsAfterEachReload) {
         EXPECT_EQ(s.deviceBytes, ref.deviceBytes) << "cycle " << s.cycle;
     }
     EXPECT_TRUE(r.gpuFlat) << r.verdict;
+    // 100 frames from the second cycle end to the last: 16 MiB is 0.16 MiB a frame.
+    const std::int64_t growth = static_cast<std::int64_t>(r.cycleEnds.back().residentBytes) -
+                                static_cast<std::int64_t>(ref.residentBytes);
+    EXPECT_LT(growth, 16 << 20) << r.verdict;
     EXPECT_EQ(r.validationMessages, 0u);
     std::printf("soak: %s\n", r.verdict.c_str());
 }
