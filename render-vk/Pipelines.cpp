@@ -73,19 +73,26 @@ VkPipeline Pipelines::get(const PipelineKey& key) {
 }
 
 void Pipelines::prewarm(std::uint8_t samples) {
+    // Every blend mode untextured and with one texture unit; REPLACE and
+    // ALPHA also alpha-tested (cut-out foliage, sprites).
     for (std::uint8_t blend = 0; blend < 5; ++blend) {
-        get({blend, 0xF, samples, 0, 0});
-        get({blend, 0xF, samples, 0, 1});  // alpha-tested
+        get({blend, 0xF, samples, 0, 0, 0, 0});
+        get({blend, 0xF, samples, 0, 0, 1, 0});
     }
+    for (std::uint8_t blend = 0; blend < 2; ++blend) get({blend, 0xF, samples, 0, 1, 1, 0});
 }
 
 VkPipeline Pipelines::create(const PipelineKey& key) {
     std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
     stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, vert_, "main", nullptr};
-    // m3g.frag's constant_id 0 (MAY_DISCARD).
-    const VkBool32 mayDiscard = key.discard ? VK_TRUE : VK_FALSE;
-    const VkSpecializationMapEntry entry{0, 0, sizeof(VkBool32)};
-    const VkSpecializationInfo fragSpec{1, &entry, sizeof(mayDiscard), &mayDiscard};
+    // m3g.frag's constant_ids 0..3: MAY_DISCARD, UNIT0, UNIT1, FOG.
+    const std::array<VkBool32, 4> features{key.discard ? VK_TRUE : VK_FALSE, (key.textures & 1) ? VK_TRUE : VK_FALSE,
+                                           (key.textures & 2) ? VK_TRUE : VK_FALSE, key.fog ? VK_TRUE : VK_FALSE};
+    std::array<VkSpecializationMapEntry, 4> entries{};
+    for (std::uint32_t i = 0; i < entries.size(); ++i)
+        entries[i] = {i, static_cast<std::uint32_t>(i * sizeof(VkBool32)), sizeof(VkBool32)};
+    const VkSpecializationInfo fragSpec{static_cast<std::uint32_t>(entries.size()), entries.data(), sizeof(features),
+                                        features.data()};
     stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT, frag_, "main", &fragSpec};
 
     // Five streams: position, normal, colour, texcoord 0, texcoord 1. Strides

@@ -77,6 +77,19 @@ std::uint8_t writeMask(const CompositingMode* cm) {
         ((!cm || cm->isAlphaWriteEnabled()) ? VK_COLOR_COMPONENT_A_BIT : 0));
 }
 
+/// The pipeline of a draw with uniforms `u`: blending and write mask from
+/// `cm` (null: REPLACE, every channel), the shader features `u` uses.
+PipelineKey pipelineKey(const DrawUniforms& u, const CompositingMode* cm, std::uint8_t samples) {
+    PipelineKey key;
+    key.blend = blendIndex(cm);
+    key.writeMask = writeMask(cm);
+    key.samples = samples;
+    key.discard = (u.misc[1] > 0.0f || u.texEnv[0][3] != 0 || u.texEnv[1][3] != 0) ? 1 : 0;
+    key.textures = static_cast<std::uint8_t>((u.texEnv[0][0] != TEX_OFF ? 1 : 0) | (u.texEnv[1][0] != TEX_OFF ? 2 : 0));
+    key.fog = u.fogParams[0] != 0.0f ? 1 : 0;
+    return key;
+}
+
 std::int32_t texFunc(int blending) {
     switch (blending) {
     case Texture2D::FUNC_REPLACE: return TEX_REPLACE;
@@ -314,11 +327,11 @@ void Renderer::begin(Graphics3D& g3d, bool coveredByClear) {
                                                 Texture2D::FILTER_BASE_LEVEL);
         VkDescriptorSet set, textures;
         std::uint32_t offset;
-        quadUniforms(priorTexture, sampler, TEX_REPLACE, set, offset, textures);
+        const DrawUniforms& u = quadUniforms(priorTexture, sampler, TEX_REPLACE, set, offset, textures);
         const float ndc[4] = {-1.0f, -1.0f, 1.0f, 1.0f};
         const float tex[4] = {0.0f, 0.0f, 1.0f, 1.0f};
-        drawQuad(set, offset, textures, PipelineKey{0, 0xF, static_cast<std::uint8_t>(samples_)}, false, false, ndc, 0.0f,
-                 tex);
+        drawQuad(set, offset, textures, pipelineKey(u, nullptr, static_cast<std::uint8_t>(samples_)), false, false, ndc,
+                 0.0f, tex);
     }
 }
 
@@ -468,9 +481,8 @@ void Renderer::clear(Graphics3D& g3d, const Background* background) {
                               static_cast<float>(background->getCropY() + background->getCropHeight()) / ih};
     u.texEnv[0][3] = (repeatX ? 0 : 1) | (repeatY ? 0 : 2);
     const float ndc[4] = {-1.0f, -1.0f, 1.0f, 1.0f};
-    const std::uint8_t border = repeatX && repeatY ? 0 : 1;
-    drawQuad(set, offset, textures, PipelineKey{0, 0xF, static_cast<std::uint8_t>(samples_), 0, border}, false, false,
-             ndc, 0.0f, texRect);
+    drawQuad(set, offset, textures, pipelineKey(u, nullptr, static_cast<std::uint8_t>(samples_)), false, false, ndc,
+             0.0f, texRect);
 }
 
 DrawUniforms& Renderer::quadUniforms(const TextureMirror& tex, VkSampler sampler, std::int32_t func,
@@ -652,12 +664,8 @@ void Renderer::drawSubmesh(const detail::RenderQueue& queue, const detail::Rende
     u.misc[1] = cm ? cm->getAlphaThreshold() : 0.0f;
     u.misc[2] = -1.0f;
 
-    PipelineKey key;
-    key.blend = blendIndex(cm);
-    key.writeMask = writeMask(cm);
-    key.samples = static_cast<std::uint8_t>(samples_);
+    PipelineKey key = pipelineKey(u, cm, static_cast<std::uint8_t>(samples_));
     key.wireframe = debug_.wireframe ? 1 : 0;
-    key.discard = u.misc[1] > 0.0f ? 1 : 0;
     bindPipeline(key);
     setDepthState(!cm || cm->isDepthTestEnabled(), !cm || cm->isDepthWriteEnabled(), cm ? cm->getDepthOffsetFactor() : 0.0f,
                   cm ? cm->getDepthOffsetUnits() : 0.0f);
@@ -714,11 +722,7 @@ void Renderer::drawSprite(const detail::RenderQueue& queue, const detail::Render
     u.misc[0] = item.alphaFactor;
     u.misc[1] = cm ? cm->getAlphaThreshold() : 0.0f;
     u.misc[2] = r.eyeDepth;  // sprites are fogged at their origin's depth
-    PipelineKey key;
-    key.blend = blendIndex(cm);
-    key.writeMask = writeMask(cm);
-    key.samples = static_cast<std::uint8_t>(samples_);
-    key.discard = u.misc[1] > 0.0f ? 1 : 0;
+    const PipelineKey key = pipelineKey(u, cm, static_cast<std::uint8_t>(samples_));
     const float ndc[4] = {r.x0, r.y0, r.x1, r.y1};
     const float texRect[4] = {r.s0, r.t0, r.s1, r.t1};
     drawQuad(set, offset, textures, key, !cm || cm->isDepthTestEnabled(), !cm || cm->isDepthWriteEnabled(), ndc,

@@ -16,9 +16,14 @@ layout(location = 6) in float inFogDepth;
 
 layout(location = 0) out vec4 outColor;
 
-// False in pipelines of draws with no alpha threshold and no Background
-// BORDER: the discards compile away, so depth can be tested before shading.
+// The features a draw uses (render-vk/Pipelines.h, PipelineKey): what a
+// draw does not use compiles away instead of running masked. MAY_DISCARD is
+// false for draws with no alpha threshold and no Background BORDER, so depth
+// can also be tested before shading.
 layout(constant_id = 0) const bool MAY_DISCARD = true;
+layout(constant_id = 1) const bool UNIT0 = true;
+layout(constant_id = 2) const bool UNIT1 = true;
+layout(constant_id = 3) const bool FOG = true;
 
 vec4 applyUnit(vec4 cf, int unit, vec4 tc) {
     ivec4 env = u.texEnv[unit];
@@ -52,14 +57,14 @@ vec4 applyUnit(vec4 cf, int unit, vec4 tc) {
 void main() {
     bool flatShade = (u.flags.x & F_FLAT) != 0;
     vec4 color = gl_FrontFacing ? (flatShade ? inFlatFront : inFront) : (flatShade ? inFlatBack : inBack);
-    if (u.texEnv[0].x != 0) color = applyUnit(color, 0, inTex0);
-    if (u.texEnv[1].x != 0) color = applyUnit(color, 1, inTex1);
+    if (UNIT0 && u.texEnv[0].x != 0) color = applyUnit(color, 0, inTex0);
+    if (UNIT1 && u.texEnv[1].x != 0) color = applyUnit(color, 1, inTex1);
 
     // Alpha test: pass if A >= threshold (off at 0).
     if (MAY_DISCARD && u.misc.y > 0.0 && color.a < u.misc.y) discard;
 
     int fogMode = int(u.fogParams.x);
-    if (fogMode != 0) {
+    if (FOG && fogMode != 0) {
         float z = inFogDepth;
         float f = fogMode == 1 ? (u.fogParams.z - z) / (u.fogParams.z - u.fogParams.y) : exp(-u.fogParams.w * z);
         f = clamp(f, 0.0, 1.0);
