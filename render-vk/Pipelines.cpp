@@ -76,15 +76,23 @@ void Pipelines::prewarm(std::uint8_t samples) {
     // Every blend mode untextured and with one texture unit; REPLACE and
     // ALPHA also alpha-tested (cut-out foliage, sprites).
     for (std::uint8_t blend = 0; blend < 5; ++blend) {
-        get({blend, 0xF, samples, 0, 0, 0, 0});
-        get({blend, 0xF, samples, 0, 0, 1, 0});
+        for (std::uint8_t lit = 0; lit < 2; ++lit) {
+            get({blend, 0xF, samples, 0, 0, 0, 0, lit});
+            get({blend, 0xF, samples, 0, 0, 1, 0, lit});
+        }
     }
-    for (std::uint8_t blend = 0; blend < 2; ++blend) get({blend, 0xF, samples, 0, 1, 1, 0});
+    for (std::uint8_t blend = 0; blend < 2; ++blend) get({blend, 0xF, samples, 0, 1, 1, 0, 1});
 }
 
 VkPipeline Pipelines::create(const PipelineKey& key) {
     std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
-    stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, vert_, "main", nullptr};
+    // m3g.vert's constant_ids 0..1: LIGHTING, TWO_SIDED.
+    const std::array<VkBool32, 2> vertexFeatures{(key.lighting & 1) ? VK_TRUE : VK_FALSE,
+                                                 (key.lighting & 2) ? VK_TRUE : VK_FALSE};
+    const std::array<VkSpecializationMapEntry, 2> vertexEntries{
+        VkSpecializationMapEntry{0, 0, sizeof(VkBool32)}, VkSpecializationMapEntry{1, sizeof(VkBool32), sizeof(VkBool32)}};
+    const VkSpecializationInfo vertSpec{2, vertexEntries.data(), sizeof(vertexFeatures), vertexFeatures.data()};
+    stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, vert_, "main", &vertSpec};
     // m3g.frag's constant_ids 0..3: MAY_DISCARD, UNIT0, UNIT1, FOG.
     const std::array<VkBool32, 4> features{key.discard ? VK_TRUE : VK_FALSE, (key.textures & 1) ? VK_TRUE : VK_FALSE,
                                            (key.textures & 2) ? VK_TRUE : VK_FALSE, key.fog ? VK_TRUE : VK_FALSE};

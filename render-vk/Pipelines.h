@@ -25,10 +25,12 @@ struct PipelineKey {
     std::uint8_t discard = 0;
     std::uint8_t textures = 0;  ///< bit 0: unit 0 enabled, bit 1: unit 1
     std::uint8_t fog = 0;       ///< 1: fog applied
+    /// Vertex-shader features (m3g.vert): bit 0 lighting, bit 1 two-sided.
+    std::uint8_t lighting = 0;
     std::uint32_t packed() const noexcept {
         return blend | (writeMask << 4) | (samples << 8) | (static_cast<std::uint32_t>(wireframe) << 16) |
                (static_cast<std::uint32_t>(discard) << 17) | (static_cast<std::uint32_t>(textures) << 18) |
-               (static_cast<std::uint32_t>(fog) << 20);
+               (static_cast<std::uint32_t>(fog) << 20) | (static_cast<std::uint32_t>(lighting) << 21);
     }
 };
 

@@ -87,6 +87,7 @@ PipelineKey pipelineKey(const DrawUniforms& u, const CompositingMode* cm, std::u
     key.discard = (u.misc[1] > 0.0f || u.texEnv[0][3] != 0 || u.texEnv[1][3] != 0) ? 1 : 0;
     key.textures = static_cast<std::uint8_t>((u.texEnv[0][0] != TEX_OFF ? 1 : 0) | (u.texEnv[1][0] != TEX_OFF ? 2 : 0));
     key.fog = u.fogParams[0] != 0.0f ? 1 : 0;
+    if (u.flags[0] & F_LIGHTING) key.lighting = (u.flags[0] & F_TWO_SIDED) ? 3 : 1;
     return key;
 }
 

@@ -18,6 +18,12 @@ layout(location = 4) out vec4 outTex0;    // (s, t, r, q) after the texture matr
 layout(location = 5) out vec4 outTex1;
 layout(location = 6) out float outFogDepth;
 
+// Features of the pipeline (render-vk/Pipelines.h, PipelineKey::lighting):
+// lighting that a draw does not use compiles away (llvmpipe would run it
+// under a lane mask).
+layout(constant_id = 0) const bool LIGHTING = true;
+layout(constant_id = 1) const bool TWO_SIDED = true;
+
 bool has(int bit) { return (u.flags.x & bit) != 0; }
 
 vec4 lightVertex(vec3 eyePos, vec3 n, vec4 ambient, vec4 diffuse) {
@@ -75,7 +81,7 @@ void main() {
     vec4 vertexColor = has(F_HAS_COLORS) ? inColor : u.defaultColor;
 
     vec4 front, back;
-    if (has(F_LIGHTING)) {
+    if (LIGHTING && has(F_LIGHTING)) {
         vec3 eyePos = eye.xyz / eye.w;
         vec3 n = has(F_HAS_NORMALS) ? inNormal : vec3(0.0, 0.0, 1.0);
         n = mat3(u.normalMatrix) * n;
@@ -85,7 +91,7 @@ void main() {
         vec4 ambient = track ? vertexColor : u.matAmbient;
         vec4 diffuse = track ? vertexColor : u.matDiffuse;
         front = lightVertex(eyePos, n, ambient, diffuse);
-        back = has(F_TWO_SIDED) ? lightVertex(eyePos, -n, ambient, diffuse) : front;
+        back = TWO_SIDED && has(F_TWO_SIDED) ? lightVertex(eyePos, -n, ambient, diffuse) : front;
     } else {
         front = back = clamp(vertexColor, 0.0, 1.0);
     }
