@@ -9,7 +9,7 @@
 // releaseTarget with read-back; the calling thread's CPU time in
 // render(World) per draw (collect, uploads if any, recording; the frame is
 // opened by a clear(null) before it); and pipelines created in steady state
-// (should be 0). M3G_VK_NO_PREWARM=1 skips pipeline pre-warming.
+// (should be 0). M3G_VK_PREWARM=1/0 forces pipeline pre-warming on or off.
 #include <chrono>
 #include <cstdio>
 #include <ctime>
