@@ -178,7 +178,8 @@ M3G_AVX2 void skinT(const SkinningJob& j, std::size_t begin, std::size_t end) no
 //
 // - uniform: eight consecutive vertices with the same slots (bit patterns;
 //   SkinnedMesh::addTransform ranges make such runs the common case): the K
-//   entries are blended once, the inputs are loaded as eight-lane x, y, z
+//   entries are blended once (and reused while the next blocks have the
+//   same slot values), the inputs are loaded as eight-lane x, y, z
 //   (three loads and five shuffles per array) and the blended rows are
 //   applied with three FMAs per output lane set;
 // - per vertex: each vertex's K entries are blended as three 256-bit rows
@@ -399,15 +400,8 @@ M3G_AVX2_INLINE __m256 rowTimes(const float* m, __m256 a, __m256 b, __m256 c) no
 /// weights): the rows are blended once and applied to eight lanes with
 /// FMAs (the result may differ from skinBlock's in the last bit; a vertex's
 /// block, not the chunking, decides which runs).
-template <int K>
-M3G_AVX2_INLINE Block skinUniform(const BlockContext& c, const std::int32_t* bi, const float* bw, const float* p,
-                                  const float* n, unsigned& bad) noexcept {
-    alignas(32) float m[24];
-    __m256 y0, y1, y2;
-    blendRows<K>(c, bi, bw, y0, y1, y2, bad);
-    _mm256_store_ps(m, y0);
-    _mm256_store_ps(m + 8, y1);
-    _mm256_store_ps(m + 16, y2);
+/// `m`: the blended rows (blendRows) of the shared slots, 24 floats.
+M3G_AVX2_INLINE Block skinUniform(const BlockContext& c, const float* m, const float* p, const float* n) noexcept {
     __m256 px, py, pz, nx, ny, nz;
     loadSoa3(p, px, py, pz);
     loadSoa3(n, nx, ny, nz);
@@ -431,10 +425,11 @@ M3G_AVX2_INLINE Block skinUniform(const BlockContext& c, const std::int32_t* bi,
 }
 
 /// True if the eight vertices from `bi`/`bw` (stride 4) all have the slots
-/// of the first (bit patterns compared).
-M3G_AVX2_INLINE bool sameInfluences(const std::int32_t* bi, const float* bw) noexcept {
-    const __m256i b = _mm256_broadcastsi128_si256(_mm_loadu_si128(reinterpret_cast<const __m128i*>(bi)));
-    const __m256i w = _mm256_broadcastsi128_si256(_mm_loadu_si128(reinterpret_cast<const __m128i*>(bw)));
+/// at `refB`/`refW` (bit patterns compared).
+M3G_AVX2_INLINE bool sameInfluences(const std::int32_t* bi, const float* bw, const std::int32_t* refB,
+                                    const float* refW) noexcept {
+    const __m256i b = _mm256_broadcastsi128_si256(_mm_loadu_si128(reinterpret_cast<const __m128i*>(refB)));
+    const __m256i w = _mm256_broadcastsi128_si256(_mm_loadu_si128(reinterpret_cast<const __m128i*>(refW)));
     __m256i eq = _mm256_set1_epi32(-1);
 #pragma GCC unroll 4
     for (int q = 0; q < 4; ++q) {
@@ -475,6 +470,12 @@ M3G_AVX2 void skinBlocks(const SkinningJob& j, std::size_t begin, std::size_t en
     const std::size_t safe = c.safeP < c.safeN ? c.safeP : c.safeN;
     const __m256i ramp = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
     const std::size_t total = j.vertices.size();
+    // The blended rows of the last shared-slot block and where its slots are.
+    alignas(32) float rows[24];
+    bool shared = false;
+    const std::int32_t* sharedB = nullptr;
+    const float* sharedW = nullptr;
+    unsigned sharedBad = 0;
     // Blocks are aligned to the list (list positions 8b .. 8b+7), not to
     // `begin`: which path a vertex takes (uniform, consecutive, any) depends
     // on its block only, so any chunking gives the same bits. A block cut
@@ -498,8 +499,22 @@ M3G_AVX2 void skinBlocks(const SkinningJob& j, std::size_t begin, std::size_t en
             const float* n0 = c.inN + v0 * 3;
             const std::int32_t* b0 = c.boneIndices + v0 * stride;
             const float* w0 = c.boneWeights + v0 * stride;
-            if (stride == 4 && sameInfluences(b0, w0)) {
-                o = skinUniform<K>(c, b0, w0, p0, n0, bad);
+            // A run of shared slots usually spans several blocks: the rows
+            // blended for the run's first block serve the next ones too.
+            if (stride == 4 && shared && sameInfluences(b0, w0, sharedB, sharedW)) {
+                bad = sharedBad;
+                o = skinUniform(c, rows, p0, n0);
+            } else if (stride == 4 && sameInfluences(b0, w0, b0, w0)) {
+                __m256 y0, y1, y2;
+                blendRows<K>(c, b0, w0, y0, y1, y2, bad);
+                _mm256_store_ps(rows, y0);
+                _mm256_store_ps(rows + 8, y1);
+                _mm256_store_ps(rows + 16, y2);
+                shared = true;
+                sharedB = b0;
+                sharedW = w0;
+                sharedBad = bad;
+                o = skinUniform(c, rows, p0, n0);
             } else {
                 o = skinBlock<K, true>(
                     c,

@@ -84,13 +84,13 @@ private:
     }
 
 #ifdef M3G_STREAM_X86
+    __attribute__((target("avx2"), always_inline)) static __m256i ld(const void* p) noexcept {
+        return _mm256_loadu_si256(static_cast<const __m256i*>(p));
+    }
     __attribute__((target("avx2"))) void runAvx2(std::size_t begin, std::size_t end) const noexcept {
         std::size_t i = begin;
         for (; i + 8 <= end; i += 8) {
             // 8 vertices: 1 + 4 + 4 + 3 + 3 loads of 32 bytes, 3 + 3 stores.
-            auto ld = [](const void* p) __attribute__((target("avx2"))) {
-                return _mm256_loadu_si256(static_cast<const __m256i*>(p));
-            };
             __m256i mix = ld(vertices.data() + i);
             for (int q = 0; q < 4; ++q) {
                 mix = _mm256_xor_si256(mix, ld(boneIndices.data() + i * 4 + 8 * q));
