@@ -41,6 +41,7 @@ M3G_AVX2 void paletteAvx2(const PaletteJob& job) noexcept {
         const __m256d r2 = _mm256_cvtps_pd(_mm_loadu_ps(r + 8));
         // Row i of a * r (both affine): a[i][0..2] . r's rows, plus a[i][3] in w.
         __m256d m[3];
+#pragma GCC unroll 3
         for (int i = 0; i < 3; ++i) {
             const __m256d ai = _mm256_cvtps_pd(_mm_loadu_ps(a + 4 * i));
             const __m256d t = _mm256_blend_pd(zero, ai, 0x8);  // (0, 0, 0, a[i][3])
@@ -52,9 +53,14 @@ M3G_AVX2 void paletteAvx2(const PaletteJob& job) noexcept {
         const __m256d c0 = cross(m[1], m[2]), c1 = cross(m[2], m[0]), c2 = cross(m[0], m[1]);
         const __m256d d = _mm256_mul_pd(m[0], c0);
         const __m128d dlo = _mm256_castpd256_pd128(d);
-        const double det = _mm_cvtsd_f64(_mm_add_sd(_mm_add_sd(dlo, _mm_unpackhi_pd(dlo, dlo)),
-                                                    _mm256_extractf128_pd(d, 1)));
-        const __m256d scale = _mm256_set1_pd(det != 0.0 && std::isfinite(det) ? 1.0 / det : 1.0);
+        const __m128d det = _mm_add_sd(_mm_add_sd(dlo, _mm_unpackhi_pd(dlo, dlo)), _mm256_extractf128_pd(d, 1));
+        // 1 / det, or 1 where det is 0 or not finite (branch-free: the
+        // division's latency overlaps the next bone's work).
+        const __m128d absDet = _mm_andnot_pd(_mm_set_sd(-0.0), det);
+        const __m128d usable = _mm_and_pd(_mm_cmpgt_sd(absDet, _mm_setzero_pd()),
+                                          _mm_cmplt_sd(absDet, _mm_set_sd(HUGE_VAL)));
+        const __m128d inv = _mm_blendv_pd(_mm_set_sd(1.0), _mm_div_sd(_mm_set_sd(1.0), det), usable);
+        const __m256d scale = _mm256_broadcastsd_pd(inv);
         PaletteEntry& e = job.output[b];
         _mm_storeu_ps(e.position, _mm256_cvtpd_ps(m[0]));
         _mm_storeu_ps(e.position + 4, _mm256_cvtpd_ps(m[1]));
