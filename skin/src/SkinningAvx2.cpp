@@ -470,6 +470,10 @@ M3G_AVX2 void skinBlocks(const SkinningJob& j, std::size_t begin, std::size_t en
     const std::size_t safe = c.safeP < c.safeN ? c.safeP : c.safeN;
     const __m256i ramp = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
     const std::size_t total = j.vertices.size();
+    // Vertices whose every slot (not only the first influenceCount) the
+    // influence arrays hold.
+    const std::size_t tableVertices =
+        stride == 0 ? 0 : (j.boneIndices.size() < j.boneWeights.size() ? j.boneIndices.size() : j.boneWeights.size()) / stride;
     // The blended rows of the last shared-slot block and where its slots are.
     alignas(32) float rows[24];
     bool shared = false;
@@ -501,10 +505,12 @@ M3G_AVX2 void skinBlocks(const SkinningJob& j, std::size_t begin, std::size_t en
             const float* w0 = c.boneWeights + v0 * stride;
             // A run of shared slots usually spans several blocks: the rows
             // blended for the run's first block serve the next ones too.
-            if (stride == 4 && shared && sameInfluences(b0, w0, sharedB, sharedW)) {
+            // (sameInfluences reads all four slots of the eight vertices.)
+            const bool fullSlots = stride == 4 && v0 + 8 <= tableVertices;
+            if (fullSlots && shared && sameInfluences(b0, w0, sharedB, sharedW)) {
                 bad = sharedBad;
                 o = skinUniform(c, rows, p0, n0);
-            } else if (stride == 4 && sameInfluences(b0, w0, b0, w0)) {
+            } else if (fullSlots && sameInfluences(b0, w0, b0, w0)) {
                 __m256 y0, y1, y2;
                 blendRows<K>(c, b0, w0, y0, y1, y2, bad);
                 _mm256_store_ps(rows, y0);

@@ -664,3 +664,55 @@ TEST(SkinningJob, SharedInfluenceRunsAgreeAndAreBitIdenticalAcrossChunks) {
         }
     }
 }
+
+// Influence arrays that end right after the last vertex's used slots (stride
+// 4, 2 influences: the last vertex's slots 2 and 3 are not there): valid, and
+// every path gives the same results (the AVX2 shared-influence test reads all
+// four slots of eight vertices, so it must not run on that last block).
+TEST(SkinningJob, ShortInfluenceArraysAreReadOnlyWhereValid) {
+    const std::vector<PaletteEntry> pal = palette({translation(1, 2, 3), kRz90});
+    const std::size_t n = 16;
+    std::vector<std::int32_t> bones;
+    std::vector<float> weights;
+    for (std::size_t v = 0; v < n; ++v) {
+        bones.insert(bones.end(), {0, 1, -1, -1});
+        weights.insert(weights.end(), {0.25f, 0.75f, 0.0f, 0.0f});
+    }
+    bones.resize((n - 1) * 4 + 2);
+    weights.resize((n - 1) * 4 + 2);
+    std::vector<float> in(n * 3), nin(n * 3);
+    for (std::size_t i = 0; i < n * 3; ++i) {
+        in[i] = static_cast<float>(i % 7) - 3.0f;
+        nin[i] = static_cast<float>(i % 5) - 1.5f;
+    }
+    std::vector<std::uint32_t> list(n);
+    std::iota(list.begin(), list.end(), 0u);
+    std::vector<float> expectP, expectN;
+    for (Isa isa : kPaths) {
+        if (!isaSupported(isa)) continue;
+        std::vector<float> out(n * 3, -9.0f), nout(n * 3, -9.0f);
+        SkinningJob job;
+        job.vertices = list;
+        job.vertexCount = n;
+        job.influenceCount = 2;
+        job.influenceStride = 4;
+        job.boneIndices = bones;
+        job.boneWeights = weights;
+        job.palette = pal;
+        job.inPositions = in;
+        job.inNormals = nin;
+        job.outPositions = out;
+        job.outNormals = nout;
+        job.isa = isa;
+        ASSERT_TRUE(job.run()) << isaName(isa);
+        if (expectP.empty()) {
+            expectP = out;
+            expectN = nout;
+            continue;
+        }
+        for (std::size_t i = 0; i < n * 3; ++i) {
+            EXPECT_NEAR(out[i], expectP[i], 1e-5f) << isaName(isa) << " position " << i;
+            EXPECT_NEAR(nout[i], expectN[i], 1e-5f) << isaName(isa) << " normal " << i;
+        }
+    }
+}
