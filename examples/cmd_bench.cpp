@@ -2,7 +2,10 @@
 //                  extended (tests/bench/SkinWorkload.h): per-frame cost per
 //                  vertex of the paper's baseline (Nokia's engine as the paper
 //                  describes it) and of this library's palette + kernel on
-//                  each code path, with the speed-up over the baseline.
+//                  each code path, with the speed-up over the baseline;
+//                  then, for 4 influences, the memory-bandwidth reference
+//                  (SkinStreamRoof.h: a stream of the kernel's bytes per
+//                  vertex) and the influence table's memory per vertex.
 // m3g bench morph  the morph kernel against the plain per-target loop.
 // Both add the compute-shader path (Graphics3D::SKINNING_COMPUTE; on
 // lavapipe when that is the device) as a last column (ComputeBench.h).
@@ -175,6 +178,11 @@ int benchSkin(const BenchOptions& o) {
         double ns, dispatchNs, cpuNs, difference;
     };
     std::vector<ComputeRow> computeRows;
+    struct RoofRow {
+        std::size_t vertices;
+        double avx2, parallel, stream, streamParallel;  // ns per vertex
+    };
+    std::vector<RoofRow> roofRows;
     printHeader("vertices", "infl", "bones");
     std::vector<std::size_t> sizes{100, 350, 500, 1200, 10000, 100000, 1000000};
     std::vector<int> influences{1, 2, 3, 4};
@@ -210,7 +218,39 @@ int benchSkin(const BenchOptions& o) {
                                            cpu * 1e9 / static_cast<double>(v), diff});
             }
             printRow(v, k, bones, ns);
+            if (k == m3gbench::SkinWorkload::kMaxInfluences && ns[3] > 0) {
+                const m3gbench::SkinStreamRoof roof = w.streamRoof();
+                const double one = secondsPerFrame([&] { roof.frame(); }, o.seconds) * 1e9 / static_cast<double>(v);
+                const double all =
+                    secondsPerFrame([&] { roof.frame(&pool); }, o.seconds) * 1e9 / static_cast<double>(v);
+                roofRows.push_back({v, ns[3], ns[4], one, all});
+            }
         }
+    }
+    if (!roofRows.empty()) {
+        constexpr double bytes = m3gbench::SkinStreamRoof::kBytesPerVertex;
+        std::printf("\nmemory-bandwidth reference, %d influences: a plain stream of the kernel's %.0f bytes per\n"
+                    "vertex (list entry, position, normal, %d bone indices and weights read; position and normal\n"
+                    "written), 1 thread and %d threads; 'share' = stream time / kernel time:\n"
+                    "%9s %10s %8s %9s %9s %7s %10s %8s %9s %9s %7s\n",
+                    m3gbench::SkinWorkload::kMaxInfluences, bytes, m3gbench::SkinWorkload::kMaxInfluences,
+                    pool.threadCount(), "vertices", "stream ns", "GB/s", "Mv/s", "avx2 ns", "share", "stream mt",
+                    "GB/s", "Mv/s", "mt ns", "share");
+        for (const RoofRow& r : roofRows)
+            std::printf("%9zu %10.2f %8.1f %9.1f %9.2f %6.0f%% %10.2f %8.1f %9.1f %9.2f %6.0f%%\n", r.vertices,
+                        r.stream, bytes / r.stream, 1e3 / r.stream, r.avx2, 100.0 * r.stream / r.avx2,
+                        r.streamParallel, bytes / r.streamParallel, 1e3 / r.streamParallel, r.parallel,
+                        r.parallel > 0 ? 100.0 * r.streamParallel / r.parallel : 0.0);
+    }
+    {
+        // Per-vertex memory of the weights: ours is N slots, the paper's
+        // dense table one weight per (vertex, bone).
+        constexpr int n = m3gbench::SkinWorkload::kMaxInfluences;
+        std::printf("\ninfluence table per vertex (N = %d): %d bytes read per frame (N x int32 bone + N x float\n"
+                    "weight) + %d bytes of int64 accumulated weights kept for addTransform (never read by the\n"
+                    "kernel) = %d bytes; the paper's dense V x B float table: 4 x B bytes = %d (20 bones),\n"
+                    "%d (60 bones), whatever the influences per vertex.\n",
+                    n, 8 * n, 8 * n, 16 * n, 4 * 20, 4 * 60);
     }
     if (!computeRows.empty()) {
         std::printf("\ncompute path, 4 influences, positions + normals. frame: wall time of palette, upload,\n"

@@ -4,8 +4,10 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 #include <m3g/skin/Morph.h>
+#include <m3g/skin/Palette.h>
 #include <m3g/skin/Skinning.h>
 
 namespace m3g::skin::detail {
@@ -28,6 +30,11 @@ void morphAvx2(const MorphJob& job, std::size_t begin, std::size_t end) noexcept
 /// Renormalises `triples` xyz triples in place, 4 (8) lanes at a time; every
 /// triple goes through the same lane operations (partial blocks are padded).
 void normalizeSse2(float* xyz, std::size_t triples) noexcept;
+/// PaletteJob::run's loop on an already validated job, AVX2 + FMA doubles.
+void paletteAvx2(const PaletteJob& job) noexcept;
+/// The largest of `count` indices (0 for none), eight at a time: the
+/// vertex-list check of SkinningJob::validate on a large list.
+std::uint32_t maxIndexAvx2(const std::uint32_t* indices, std::size_t count) noexcept;
 void normalizeAvx2(float* xyz, std::size_t triples) noexcept;
 #endif
 

@@ -2,15 +2,26 @@
 
 #include <cmath>
 
+#include <m3g/skin/Isa.h>
+
+#include "Kernels.h"
+
 namespace m3g::skin {
 
 bool PaletteJob::validate() const noexcept {
     const std::size_t floats = boneCount * 16;
-    return boneToMesh.size() >= floats && atRest.size() >= floats && output.size() >= boneCount;
+    return boneToMesh.size() >= floats && atRest.size() >= floats && output.size() >= boneCount &&
+           isaSupported(isa);
 }
 
 bool PaletteJob::run() const noexcept {
     if (!validate()) return false;
+#ifdef M3G_SKIN_X86
+    if (resolveIsa(isa) == Isa::Avx2) {
+        detail::paletteAvx2(*this);
+        return true;
+    }
+#endif
     for (std::size_t b = 0; b < boneCount; ++b) {
         const float* a = boneToMesh.data() + b * 16;
         const float* r = atRest.data() + b * 16;

@@ -50,6 +50,9 @@ bool SkinningJob::validate() const noexcept {
     const std::uint64_t bound = limit;
     const std::uint32_t* v = vertices.data();
     const std::size_t n = vertices.size();
+#ifdef M3G_SKIN_X86
+    if (n >= 64 && isaSupported(Isa::Avx2)) return detail::maxIndexAvx2(v, n) < bound;
+#endif
     bool bad0 = false, bad1 = false, bad2 = false, bad3 = false;
     std::size_t i = 0;
     for (; i + 4 <= n; i += 4) {

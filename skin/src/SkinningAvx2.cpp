@@ -2,13 +2,11 @@
 // of this file carry the target attribute (no per-file -mavx2), so no inline
 // library function is ever compiled for AVX2 and shared with baseline code.
 //
-// Per vertex: a palette entry is three 256-bit rows (P0|P1), (P2|N0),
-// (N1|N2); K entries are blended with 3 FMAs each, the blend is multiplied by
-// (p|p), (p|n), (n|n) and the six dot products come out of three horizontal
-// adds. Blended normals wait in an 8-vertex buffer and are renormalised
-// eight at a time (one sqrt and one division per eight vertices), so the
-// long sqrt/division latency stays out of the per-vertex chain. Every lane
-// runs the same operations: a vertex's result does not depend on its batch.
+// Positions + normals with 1..4 (or more) influences run in blocks of eight
+// vertices (skinBlocks, described below); the zero-influence and
+// positions-only jobs run vertex by vertex (skinT): a palette entry is three
+// 256-bit rows, K entries blended with 3 FMAs each, and the dot products
+// come out of horizontal adds, normals renormalised eight at a time.
 #include "Kernels.h"
 
 #ifdef M3G_SKIN_X86
@@ -16,6 +14,9 @@
 #include <immintrin.h>
 
 #define M3G_AVX2 __attribute__((target("avx2,fma")))
+// Helpers of the block kernel: inlined whatever -O level (a call per vertex
+// returning three vectors through memory costs more than the work).
+#define M3G_AVX2_INLINE __attribute__((target("avx2,fma"), always_inline)) inline
 
 namespace m3g::skin::detail {
 
@@ -170,8 +171,424 @@ M3G_AVX2 void skinT(const SkinningJob& j, std::size_t begin, std::size_t end) no
     if constexpr (Normals) batch.flush();
 }
 
+// ---------------------------------------------------------------------------
+// Blocks of eight vertices (K = 1..4 or generic, with normals): the path the
+// positions + normals workloads take. Blocks are list positions 8b .. 8b+7
+// (aligned to the list, whatever the chunk), and each block takes one of:
+//
+// - uniform: eight consecutive vertices with the same slots (bit patterns;
+//   SkinnedMesh::addTransform ranges make such runs the common case): the K
+//   entries are blended once (and reused while the next blocks have the
+//   same slot values), the inputs are loaded as eight-lane x, y, z
+//   (three loads and five shuffles per array) and the blended rows are
+//   applied with three FMAs per output lane set;
+// - per vertex: each vertex's K entries are blended as three 256-bit rows
+//   (P0|P1), (P2|N0), (N1|N2) with FMAs (weights broadcast) and multiplied
+//   by (p|p), (p|n), (n|n), built from broadcast loads and blends with no
+//   shuffle (p = s * xyz + bias with w = 1, n with w = 0); the six dot
+//   products of four vertices come out of one unpack/shuffle/add reduction
+//   per row, giving x|y, z|nx, ny|nz for four vertices, and two such groups
+//   are joined into eight lanes.
+//
+// Then the normals are renormalised eight at a time (inverseLength) and the
+// block is stored, transposed back to xyz triples with 256-bit stores when
+// its vertices are consecutive and the strides are 3, else lane by lane. A
+// block that runs past the list repeats its last vertex; a block cut by a
+// chunk boundary is computed whole and stores only its lanes in the chunk.
+// Which path a vertex takes depends only on its block, so runParallel() is
+// bit-identical to run() for any grain and thread count.
+
+/// The zero entry slots outside the palette read instead (their vertices
+/// are then redone by skinVertexChecked, which skips such slots).
+alignas(32) const PaletteEntry kZeroEntry{};
+
+struct BlockContext {
+    const std::uint32_t* vertices;
+    const float* inP;
+    std::size_t inPs;
+    std::size_t safeP;  // vertices below this can read 4 floats of position
+    const float* inN;
+    std::size_t inNs;
+    std::size_t safeN;
+    const std::int32_t* boneIndices;
+    const float* boneWeights;
+    std::size_t stride;
+    int count;
+    const PaletteEntry* palette;
+    std::size_t bones;
+    __m256 scale;  // s s s 0 | s s s 0
+    __m256 bias;   // bx by bz 1 | bx by bz 1
+};
+
+/// Entry `bone` of the palette, or the zero entry (setting `bad`) outside it.
+M3G_AVX2_INLINE const float* paletteRow(const BlockContext& c, std::int32_t bone, unsigned& bad) noexcept {
+    const auto b = static_cast<std::uint32_t>(bone);
+    const bool in = b < c.bones;
+    bad |= static_cast<unsigned>(!in);
+    return reinterpret_cast<const float*>(in ? c.palette + b : &kZeroEntry);
+}
+
+/// (x, y, z, w) of an xyz triple in both halves; w is whatever follows z
+/// (the caller blends it away), read only when `wide` says it is there.
+template <bool Wide>
+M3G_AVX2_INLINE __m256 broadcastXyz(const float* p, bool wide) noexcept {
+    if (Wide || wide) return _mm256_broadcast_ps(reinterpret_cast<const __m128*>(p));
+    const __m128 x = loadXyz0(p);
+    return pair(x, x);
+}
+
+struct Rows {
+    __m256 m0, m1, m2;  // (P0|P1).(p|p), (P2|N0).(p|n), (N1|N2).(n|n), per element
+};
+
+/// The K palette entries of one vertex blended: (P0|P1), (P2|N0), (N1|N2).
+/// Sets `bad` when a slot's bone is outside the palette.
+template <int K>
+M3G_AVX2_INLINE void blendRows(const BlockContext& c, const std::int32_t* bi, const float* bw, __m256& y0, __m256& y1,
+                               __m256& y2, unsigned& bad) noexcept {
+    const int count = K > 0 ? K : c.count;
+    const float* e = paletteRow(c, bi[0], bad);
+    const __m256 w0 = _mm256_broadcast_ss(bw);
+    y0 = _mm256_mul_ps(w0, _mm256_loadu_ps(e));
+    y1 = _mm256_mul_ps(w0, _mm256_loadu_ps(e + 8));
+    y2 = _mm256_mul_ps(w0, _mm256_loadu_ps(e + 16));
+#pragma GCC unroll 4
+    for (int k = 1; k < count; ++k) {
+        const float* f = paletteRow(c, bi[k], bad);
+        const __m256 w = _mm256_broadcast_ss(bw + k);
+        y0 = _mm256_fmadd_ps(w, _mm256_loadu_ps(f), y0);
+        y1 = _mm256_fmadd_ps(w, _mm256_loadu_ps(f + 8), y1);
+        y2 = _mm256_fmadd_ps(w, _mm256_loadu_ps(f + 16), y2);
+    }
+}
+
+/// One vertex: its blended rows times its inputs (raw xyz broadcasts `p`,
+/// `n`).
+template <int K>
+M3G_AVX2_INLINE Rows blendLane(const BlockContext& c, const std::int32_t* bi, const float* bw, __m256 p, __m256 n,
+                               unsigned& bad) noexcept {
+    __m256 y0, y1, y2;
+    blendRows<K>(c, bi, bw, y0, y1, y2, bad);
+    const __m256 zero = _mm256_setzero_ps();
+    // (p|p) with w = 1: s * xyz + bias on xyz, 0 * 0 + 1 on w.
+    const __m256 pp = _mm256_fmadd_ps(_mm256_blend_ps(p, zero, 0x88), c.scale, c.bias);
+    const __m256 nn = _mm256_blend_ps(n, zero, 0x88);
+    const __m256 pn = _mm256_blend_ps(pp, nn, 0xF0);
+    return {_mm256_mul_ps(y0, pp), _mm256_mul_ps(y1, pn), _mm256_mul_ps(y2, nn)};
+}
+
+/// [a0+a2, b0+b2, a1+a3, b1+b3] per 128-bit half.
+M3G_AVX2_INLINE __m256 pairSum(__m256 a, __m256 b) noexcept {
+    return _mm256_add_ps(_mm256_unpacklo_ps(a, b), _mm256_unpackhi_ps(a, b));
+}
+/// Sums of the four elements of a, b, c, d per 128-bit half (from pairSum).
+M3G_AVX2_INLINE __m256 quadSum(__m256 ab, __m256 cd) noexcept {
+    return _mm256_add_ps(_mm256_shuffle_ps(ab, cd, _MM_SHUFFLE(1, 0, 1, 0)),
+                         _mm256_shuffle_ps(ab, cd, _MM_SHUFFLE(3, 2, 3, 2)));
+}
+
+/// Eight lanes of x, y, z to 24 consecutive floats (xyz triples).
+M3G_AVX2_INLINE void storeSoa3(float* out, __m256 x, __m256 y, __m256 z) noexcept {
+    // Per half (vertices 0-3 | 4-7): r0 = x0 y0 z0 x1, r1 = y1 z1 x2 y2, r2 = z2 x3 y3 z3.
+    const __m256 xyLo = _mm256_unpacklo_ps(x, y);                            // x0 y0 x1 y1
+    const __m256 xyHi = _mm256_unpackhi_ps(x, y);                            // x2 y2 x3 y3
+    const __m256 zx = _mm256_shuffle_ps(z, x, _MM_SHUFFLE(3, 1, 2, 0));      // z0 z2 x1 x3
+    const __m256 yz = _mm256_shuffle_ps(y, z, _MM_SHUFFLE(3, 1, 3, 1));      // y1 y3 z1 z3
+    const __m256 r0 = _mm256_shuffle_ps(xyLo, zx, _MM_SHUFFLE(2, 0, 1, 0));  // x0 y0 z0 x1
+    const __m256 r1 = _mm256_shuffle_ps(yz, xyHi, _MM_SHUFFLE(1, 0, 2, 0));  // y1 z1 x2 y2
+    const __m256 r2 = _mm256_shuffle_ps(zx, yz, _MM_SHUFFLE(3, 1, 3, 1));    // z2 x3 y3 z3
+    _mm256_storeu_ps(out, _mm256_permute2f128_ps(r0, r1, 0x20));
+    _mm256_storeu_ps(out + 8, _mm256_permute2f128_ps(r2, r0, 0x30));
+    _mm256_storeu_ps(out + 16, _mm256_permute2f128_ps(r1, r2, 0x31));
+}
+
+/// One block's results: eight lanes of position and unit normal.
+struct Block {
+    __m256 x, y, z, nx, ny, nz;
+};
+
+/// 1 / |n| per lane, or 1 where |n|^2 is zero (or NaN). The reciprocal
+/// square root estimate plus one Newton step (relative error about 2^-22)
+/// keeps the square root and division latency (some 25 cycles, which the
+/// block's long dependency chain cannot hide) out of the loop; a block with
+/// a lane whose |n|^2 is below FLT_MIN, where the estimate is not usable,
+/// takes the exact 1 / sqrt instead (decided per lane, so a vertex's result
+/// never depends on its neighbours).
+M3G_AVX2_INLINE __m256 inverseLength(__m256 nx, __m256 ny, __m256 nz) noexcept {
+    const __m256 one = _mm256_set1_ps(1.0f);
+    const __m256 len2 = _mm256_fmadd_ps(nz, nz, _mm256_fmadd_ps(ny, ny, _mm256_mul_ps(nx, nx)));
+    const __m256 positive = _mm256_cmp_ps(len2, _mm256_setzero_ps(), _CMP_GT_OQ);
+    const __m256 tiny = _mm256_and_ps(positive, _mm256_cmp_ps(len2, _mm256_set1_ps(1.17549435e-38f), _CMP_LT_OQ));
+    const __m256 y = _mm256_rsqrt_ps(len2);
+    // y' = y * (3 - len2 * y * y) / 2
+    __m256 refined = _mm256_mul_ps(_mm256_mul_ps(_mm256_set1_ps(0.5f), y),
+                                   _mm256_fnmadd_ps(_mm256_mul_ps(len2, y), y, _mm256_set1_ps(3.0f)));
+    if (_mm256_movemask_ps(tiny) != 0) [[unlikely]]
+        refined = _mm256_blendv_ps(refined, _mm256_div_ps(one, _mm256_sqrt_ps(len2)), tiny);
+    return _mm256_blendv_ps(one, refined, positive);
+}
+
+/// x|y, z|nx, ny|nz of lanes l0 .. l0+3 (the four vertices per half).
+template <int K, bool Wide, class Lane>
+M3G_AVX2_INLINE void skinQuad(const BlockContext& c, Lane& lane, int l0, __m256& g0, __m256& g1, __m256& g2,
+                              unsigned& bad) noexcept {
+    Rows r[4];
+#pragma GCC unroll 4
+    for (int q = 0; q < 4; ++q) {
+        const std::int32_t* bi;
+        const float* bw;
+        const float* p;
+        const float* n;
+        bool wide;
+        lane(l0 + q, bi, bw, p, n, wide);
+        r[q] = blendLane<K>(c, bi, bw, broadcastXyz<Wide>(p, wide), broadcastXyz<Wide>(n, wide), bad);
+    }
+    g0 = quadSum(pairSum(r[0].m0, r[1].m0), pairSum(r[2].m0, r[3].m0));
+    g1 = quadSum(pairSum(r[0].m1, r[1].m1), pairSum(r[2].m1, r[3].m1));
+    g2 = quadSum(pairSum(r[0].m2, r[1].m2), pairSum(r[2].m2, r[3].m2));
+}
+
+/// Skins the eight vertices whose inputs `lane(l, bi, bw, p, n, wide)`
+/// supplies (l = 0..7); Wide: every lane may read 4 floats at p and n.
+template <int K, bool Wide, class Lane>
+M3G_AVX2_INLINE Block skinBlock(const BlockContext& c, Lane&& lane, unsigned& bad) noexcept {
+    __m256 a0, a1, a2, b0, b1, b2;
+    skinQuad<K, Wide>(c, lane, 0, a0, a1, a2, bad);
+    skinQuad<K, Wide>(c, lane, 4, b0, b1, b2, bad);
+    const __m256 g[2][3] = {{a0, a1, a2}, {b0, b1, b2}};
+    Block o;
+    o.x = _mm256_permute2f128_ps(g[0][0], g[1][0], 0x20);
+    o.y = _mm256_permute2f128_ps(g[0][0], g[1][0], 0x31);
+    o.z = _mm256_permute2f128_ps(g[0][1], g[1][1], 0x20);
+    const __m256 nx = _mm256_permute2f128_ps(g[0][1], g[1][1], 0x31);
+    const __m256 ny = _mm256_permute2f128_ps(g[0][2], g[1][2], 0x20);
+    const __m256 nz = _mm256_permute2f128_ps(g[0][2], g[1][2], 0x31);
+    const __m256 inv = inverseLength(nx, ny, nz);
+    o.nx = _mm256_mul_ps(nx, inv);
+    o.ny = _mm256_mul_ps(ny, inv);
+    o.nz = _mm256_mul_ps(nz, inv);
+    return o;
+}
+
+/// Four floats at `lo` | four at `hi`.
+M3G_AVX2_INLINE __m256 halves(const float* lo, const float* hi) noexcept {
+    return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(lo)), _mm_loadu_ps(hi), 1);
+}
+
+/// Eight consecutive xyz triples (24 floats) as x, y, z lanes.
+M3G_AVX2_INLINE void loadSoa3(const float* p, __m256& x, __m256& y, __m256& z) noexcept {
+    const __m256 m03 = halves(p, p + 12);      // x0 y0 z0 x1 | x4 y4 z4 x5
+    const __m256 m14 = halves(p + 4, p + 16);  // y1 z1 x2 y2 | y5 z5 x6 y6
+    const __m256 m25 = halves(p + 8, p + 20);  // z2 x3 y3 z3 | z6 x7 y7 z7
+    const __m256 xy = _mm256_shuffle_ps(m14, m25, _MM_SHUFFLE(2, 1, 3, 2));  // x2 y2 x3 y3
+    const __m256 yz = _mm256_shuffle_ps(m03, m14, _MM_SHUFFLE(1, 0, 2, 1));  // y0 z0 y1 z1
+    x = _mm256_shuffle_ps(m03, xy, _MM_SHUFFLE(2, 0, 3, 0));
+    y = _mm256_shuffle_ps(yz, xy, _MM_SHUFFLE(3, 1, 2, 0));
+    z = _mm256_shuffle_ps(yz, m25, _MM_SHUFFLE(3, 0, 3, 1));
+}
+
+/// Row m[0..3] of a blended matrix applied to lanes a, b, c (+ m[3] * w).
+template <bool Translate>
+M3G_AVX2_INLINE __m256 rowTimes(const float* m, __m256 a, __m256 b, __m256 c) noexcept {
+    const __m256 first = Translate ? _mm256_fmadd_ps(_mm256_broadcast_ss(m), a, _mm256_broadcast_ss(m + 3))
+                                   : _mm256_mul_ps(_mm256_broadcast_ss(m), a);
+    return _mm256_fmadd_ps(_mm256_broadcast_ss(m + 2), c, _mm256_fmadd_ps(_mm256_broadcast_ss(m + 1), b, first));
+}
+
+/// Eight consecutive vertices sharing one set of influences (the common
+/// case: SkinnedMesh::addTransform gives runs of vertices the same bones and
+/// weights): the rows are blended once and applied to eight lanes with
+/// FMAs (the result may differ from skinBlock's in the last bit; a vertex's
+/// block, not the chunking, decides which runs).
+/// `m`: the blended rows (blendRows) of the shared slots, 24 floats.
+M3G_AVX2_INLINE Block skinUniform(const BlockContext& c, const float* m, const float* p, const float* n) noexcept {
+    __m256 px, py, pz, nx, ny, nz;
+    loadSoa3(p, px, py, pz);
+    loadSoa3(n, nx, ny, nz);
+    const float s = c.scale[0];
+    const __m256 scale = _mm256_set1_ps(s);
+    px = _mm256_fmadd_ps(px, scale, _mm256_set1_ps(c.bias[0]));
+    py = _mm256_fmadd_ps(py, scale, _mm256_set1_ps(c.bias[1]));
+    pz = _mm256_fmadd_ps(pz, scale, _mm256_set1_ps(c.bias[2]));
+    Block o;
+    o.x = rowTimes<true>(m, px, py, pz);
+    o.y = rowTimes<true>(m + 4, px, py, pz);
+    o.z = rowTimes<true>(m + 8, px, py, pz);
+    const __m256 bx = rowTimes<false>(m + 12, nx, ny, nz);
+    const __m256 by = rowTimes<false>(m + 16, nx, ny, nz);
+    const __m256 bz = rowTimes<false>(m + 20, nx, ny, nz);
+    const __m256 inv = inverseLength(bx, by, bz);
+    o.nx = _mm256_mul_ps(bx, inv);
+    o.ny = _mm256_mul_ps(by, inv);
+    o.nz = _mm256_mul_ps(bz, inv);
+    return o;
+}
+
+/// True if the eight vertices from `bi`/`bw` (stride 4) all have the slots
+/// at `refB`/`refW` (bit patterns compared).
+M3G_AVX2_INLINE bool sameInfluences(const std::int32_t* bi, const float* bw, const std::int32_t* refB,
+                                    const float* refW) noexcept {
+    const __m256i b = _mm256_broadcastsi128_si256(_mm_loadu_si128(reinterpret_cast<const __m128i*>(refB)));
+    const __m256i w = _mm256_broadcastsi128_si256(_mm_loadu_si128(reinterpret_cast<const __m128i*>(refW)));
+    __m256i eq = _mm256_set1_epi32(-1);
+#pragma GCC unroll 4
+    for (int q = 0; q < 4; ++q) {
+        const __m256i bq = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(bi + 8 * q));
+        const __m256i wq = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(bw + 8 * q));
+        eq = _mm256_and_si256(eq, _mm256_and_si256(_mm256_cmpeq_epi32(bq, b), _mm256_cmpeq_epi32(wq, w)));
+    }
+    return _mm256_movemask_epi8(eq) == -1;
+}
+
+template <int K>
+M3G_AVX2 void skinBlocks(const SkinningJob& j, std::size_t begin, std::size_t end) noexcept {
+    BlockContext c;
+    c.vertices = j.vertices.data();
+    c.inP = j.inPositions.data();
+    c.inPs = j.inPositionStride;
+    c.safeP = j.inPositions.size() >= 4 ? (j.inPositions.size() - 4) / c.inPs + 1 : 0;
+    c.inN = j.inNormals.data();
+    c.inNs = j.inNormalStride;
+    c.safeN = j.inNormals.size() >= 4 ? (j.inNormals.size() - 4) / c.inNs + 1 : 0;
+    c.boneIndices = j.boneIndices.data();
+    c.boneWeights = j.boneWeights.data();
+    c.stride = static_cast<std::size_t>(j.influenceStride);
+    c.count = j.influenceCount;
+    c.palette = j.palette.data();
+    c.bones = j.palette.size();
+    const float s = j.positionScale;
+    c.scale = _mm256_setr_ps(s, s, s, 0.0f, s, s, s, 0.0f);
+    c.bias = _mm256_setr_ps(j.positionBias[0], j.positionBias[1], j.positionBias[2], 1.0f, j.positionBias[0],
+                            j.positionBias[1], j.positionBias[2], 1.0f);
+    float* outP = j.outPositions.data();
+    float* outN = j.outNormals.data();
+    const std::size_t outPs = j.outPositionStride, outNs = j.outNormalStride;
+    const std::size_t stride = c.stride;
+    // Consecutive vertices, packed xyz arrays: lanes at fixed offsets from
+    // the block's first vertex, 256-bit stores.
+    const bool packed = c.inPs == 3 && c.inNs == 3 && outPs == 3 && outNs == 3;
+    const std::size_t safe = c.safeP < c.safeN ? c.safeP : c.safeN;
+    const __m256i ramp = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    const std::size_t total = j.vertices.size();
+    // Vertices whose every slot (not only the first influenceCount) the
+    // influence arrays hold.
+    const std::size_t tableVertices =
+        stride == 0 ? 0 : (j.boneIndices.size() < j.boneWeights.size() ? j.boneIndices.size() : j.boneWeights.size()) / stride;
+    // The blended rows of the last shared-slot block and where its slots are.
+    alignas(32) float rows[24];
+    bool shared = false;
+    const std::int32_t* sharedB = nullptr;
+    const float* sharedW = nullptr;
+    unsigned sharedBad = 0;
+    // Blocks are aligned to the list (list positions 8b .. 8b+7), not to
+    // `begin`: which path a vertex takes (uniform, consecutive, any) depends
+    // on its block only, so any chunking gives the same bits. A block cut
+    // by [begin, end) is computed whole and only its lanes in range stored.
+    for (std::size_t a = begin - begin % 8; a < end; a += 8) {
+        const std::size_t n = total - a < 8 ? total - a : 8;  // lanes in the list
+        const std::size_t lo = begin > a ? begin - a : 0;
+        const std::size_t hi = end - a < 8 ? end - a : 8;  // lanes to store: [lo, hi)
+        unsigned bad = 0;
+        std::size_t v[8];
+        Block o;
+        const std::size_t v0 = c.vertices[a];
+        bool consecutive = false;
+        if (packed && n == 8 && v0 + 8 <= safe) {
+            const __m256i listed = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(c.vertices + a));
+            const __m256i expect = _mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(v0)), ramp);
+            consecutive = _mm256_movemask_epi8(_mm256_cmpeq_epi32(listed, expect)) == -1;
+        }
+        if (consecutive) {
+            const float* p0 = c.inP + v0 * 3;
+            const float* n0 = c.inN + v0 * 3;
+            const std::int32_t* b0 = c.boneIndices + v0 * stride;
+            const float* w0 = c.boneWeights + v0 * stride;
+            // A run of shared slots usually spans several blocks: the rows
+            // blended for the run's first block serve the next ones too.
+            // (sameInfluences reads all four slots of the eight vertices.)
+            const bool fullSlots = stride == 4 && v0 + 8 <= tableVertices;
+            if (fullSlots && shared && sameInfluences(b0, w0, sharedB, sharedW)) {
+                bad = sharedBad;
+                o = skinUniform(c, rows, p0, n0);
+            } else if (fullSlots && sameInfluences(b0, w0, b0, w0)) {
+                __m256 y0, y1, y2;
+                blendRows<K>(c, b0, w0, y0, y1, y2, bad);
+                _mm256_store_ps(rows, y0);
+                _mm256_store_ps(rows + 8, y1);
+                _mm256_store_ps(rows + 16, y2);
+                shared = true;
+                sharedB = b0;
+                sharedW = w0;
+                sharedBad = bad;
+                o = skinUniform(c, rows, p0, n0);
+            } else {
+                o = skinBlock<K, true>(
+                    c,
+                    [&](int l, const std::int32_t*& bi, const float*& bw, const float*& p, const float*& nrm,
+                        bool& wide) {
+                        const auto ls = static_cast<std::size_t>(l);
+                        bi = b0 + ls * stride;
+                        bw = w0 + ls * stride;
+                        p = p0 + 3 * ls;
+                        nrm = n0 + 3 * ls;
+                        wide = true;
+                    },
+                    bad);
+            }
+            if (lo == 0 && hi == 8 && !bad) {
+                storeSoa3(outP + v0 * 3, o.x, o.y, o.z);
+                storeSoa3(outN + v0 * 3, o.nx, o.ny, o.nz);
+                continue;
+            }
+            for (std::size_t l = 0; l < 8; ++l) v[l] = v0 + l;
+        } else {
+            // Any list: lanes by index; a short block repeats its last vertex.
+            for (std::size_t l = 0; l < 8; ++l) v[l] = c.vertices[a + (l < n ? l : n - 1)];
+            o = skinBlock<K, false>(
+                c,
+                [&](int l, const std::int32_t*& bi, const float*& bw, const float*& p, const float*& nrm,
+                    bool& wide) {
+                    const std::size_t vl = v[l];
+                    bi = c.boneIndices + vl * stride;
+                    bw = c.boneWeights + vl * stride;
+                    p = c.inP + vl * c.inPs;
+                    nrm = c.inN + vl * c.inNs;
+                    wide = vl < safe;
+                },
+                bad);
+        }
+        alignas(32) float t[6][8];
+        _mm256_store_ps(t[0], o.x);
+        _mm256_store_ps(t[1], o.y);
+        _mm256_store_ps(t[2], o.z);
+        _mm256_store_ps(t[3], o.nx);
+        _mm256_store_ps(t[4], o.ny);
+        _mm256_store_ps(t[5], o.nz);
+        for (std::size_t l = lo; l < hi; ++l) {
+            float* op = outP + v[l] * outPs;
+            float* on = outN + v[l] * outNs;
+            op[0] = t[0][l], op[1] = t[1][l], op[2] = t[2][l];
+            on[0] = t[3][l], on[1] = t[4][l], on[2] = t[5][l];
+        }
+        // A block with a slot outside the palette: all its vertices by the
+        // checked formula (the block decides, so chunking does not).
+        if (bad)
+            for (std::size_t l = lo; l < hi; ++l) skinVertexChecked(j, v[l]);
+    }
+}
+
 template <bool Normals>
 M3G_AVX2 void skinN(const SkinningJob& j, std::size_t begin, std::size_t end) noexcept {
+    if constexpr (Normals) {
+        switch (j.influenceCount) {
+            case 0: break;
+            case 1: skinBlocks<1>(j, begin, end); return;
+            case 2: skinBlocks<2>(j, begin, end); return;
+            case 3: skinBlocks<3>(j, begin, end); return;
+            case 4: skinBlocks<4>(j, begin, end); return;
+            default: skinBlocks<-1>(j, begin, end); return;
+        }
+    }
     switch (j.influenceCount) {
         case 0: skinT<0, Normals>(j, begin, end); return;
         case 1: skinT<1, Normals>(j, begin, end); return;
@@ -183,6 +600,21 @@ M3G_AVX2 void skinN(const SkinningJob& j, std::size_t begin, std::size_t end) no
 }
 
 }  // namespace
+
+M3G_AVX2 std::uint32_t maxIndexAvx2(const std::uint32_t* indices, std::size_t count) noexcept {
+    __m256i m0 = _mm256_setzero_si256(), m1 = m0;
+    std::size_t i = 0;
+    for (; i + 16 <= count; i += 16) {
+        m0 = _mm256_max_epu32(m0, _mm256_loadu_si256(reinterpret_cast<const __m256i*>(indices + i)));
+        m1 = _mm256_max_epu32(m1, _mm256_loadu_si256(reinterpret_cast<const __m256i*>(indices + i + 8)));
+    }
+    alignas(32) std::uint32_t lanes[8];
+    _mm256_store_si256(reinterpret_cast<__m256i*>(lanes), _mm256_max_epu32(m0, m1));
+    std::uint32_t m = 0;
+    for (std::uint32_t x : lanes) m = x > m ? x : m;
+    for (; i < count; ++i) m = indices[i] > m ? indices[i] : m;
+    return m;
+}
 
 M3G_AVX2 void skinAvx2(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept {
     if (job.inNormals.empty())

@@ -40,11 +40,16 @@ void ThreadPool::workerLoop() {
             wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
             if (stop_) return;
             seen = generation_;
+            // A job the caller has already closed (it ran out of tasks before
+            // this thread got a CPU) is not touched: its fields may be the
+            // next job's by now.
+            if (!open_) continue;
+            ++active_;
         }
         work();
         {
             std::lock_guard lock(mutex_);
-            ++doneWorkers_;
+            if (--active_ != 0) continue;
         }
         done_.notify_one();
     }
@@ -63,16 +68,18 @@ void ThreadPool::run(std::size_t tasks, void (*fn)(void*, std::size_t), void* co
         context_ = context;
         tasks_ = tasks;
         next_.store(0, std::memory_order_relaxed);
-        doneWorkers_ = 0;
+        open_ = true;
         ++generation_;
     }
     wake_.notify_all();
     work();
-    // Every worker takes part in every job (possibly finding no task left):
-    // waiting for all of them means every task has returned and no worker
-    // still reads this job's fields when the next run() replaces them.
+    // Every task has been claimed. Close the job, then wait only for the
+    // workers that joined it (they may still be running a claimed task): a
+    // worker that has not woken yet (on a busy machine it can take
+    // milliseconds to get a CPU) is not waited for, it finds the job closed.
     std::unique_lock lock(mutex_);
-    done_.wait(lock, [&] { return doneWorkers_ == workers_.size(); });
+    open_ = false;
+    done_.wait(lock, [&] { return active_ == 0; });
 }
 
 }  // namespace m3g::skin

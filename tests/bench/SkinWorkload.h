@@ -23,6 +23,7 @@
 #include <m3g/skin/ThreadPool.h>
 
 #include "SkinBaseline.h"
+#include "SkinStreamRoof.h"
 
 namespace m3gbench {
 
@@ -118,6 +119,20 @@ struct SkinWorkload {
         palette.resize(static_cast<std::size_t>(bones));
         outPositions.resize(vertices * 3);
         outNormals.resize(vertices * 3);
+    }
+
+    /// The memory-bandwidth reference over this workload's arrays (meant for
+    /// influences == kMaxInfluences, whose bytes it moves).
+    SkinStreamRoof streamRoof() {
+        SkinStreamRoof r;
+        r.vertices = all;
+        r.positions = positions;
+        r.normals = normals;
+        r.boneIndices = boneIndices;
+        r.boneWeights = boneWeights;
+        r.outPositions = outPositions;
+        r.outNormals = outNormals;
+        return r;
     }
 
     /// One frame's deformation with `variant`: what a renderer pays per frame

@@ -69,6 +69,64 @@ void skinArgs(benchmark::internal::Benchmark* b) {
 }
 BENCHMARK(BM_Skin)->Apply(skinArgs)->Unit(benchmark::kMicrosecond)->UseRealTime();
 
+// Every vertex with its own bones and weights (runLength 1): no two
+// neighbours share influences, so the AVX2 kernel's per-vertex blend path
+// runs instead of its shared-influence (uniform block) path.
+void BM_SkinDistinct(benchmark::State& state) {
+    const auto v = static_cast<std::size_t>(state.range(0));
+    const int k = static_cast<int>(state.range(1));
+    const auto variant = static_cast<Variant>(state.range(2));
+    static std::map<std::pair<std::size_t, int>, std::unique_ptr<m3gbench::SkinWorkload>> cache;
+    auto& slot = cache[{v, k}];
+    if (!slot) slot = std::make_unique<m3gbench::SkinWorkload>(v, k, 60, 1);
+    if (!slot->frame(variant)) {
+        state.SkipWithError("variant not supported on this CPU");
+        return;
+    }
+    for (auto _ : state) {
+        slot->frame(variant);
+        benchmark::DoNotOptimize(slot->outPositions.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * v));
+    state.counters["per_vertex"] =
+        benchmark::Counter(static_cast<double>(v), benchmark::Counter::kIsIterationInvariantRate |
+                                                       benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_SkinDistinct)
+    ->ArgNames({"vertices", "influences", "variant"})
+    ->ArgsProduct({{10000, 100000, 1000000},
+                   {1, 4},
+                   {static_cast<std::int64_t>(Variant::Sse2), static_cast<std::int64_t>(Variant::Avx2),
+                    static_cast<std::int64_t>(Variant::Parallel)}})
+    ->Unit(benchmark::kMicrosecond)
+    ->UseRealTime();
+
+// The memory-bandwidth reference: a plain stream of the 4-influence
+// kernel's bytes per vertex (SkinStreamRoof.h), 1 thread or the pool.
+void BM_SkinStreamRoof(benchmark::State& state) {
+    const auto v = static_cast<std::size_t>(state.range(0));
+    const bool parallel = state.range(1) != 0;
+    auto& w = skinWorkload(v, m3gbench::SkinWorkload::kMaxInfluences, v <= 1200 ? 20 : 60);
+    const m3gbench::SkinStreamRoof roof = w.streamRoof();
+    m3g::skin::ThreadPool* pool = parallel ? &m3g::skin::ThreadPool::shared() : nullptr;
+    for (auto _ : state) {
+        roof.frame(pool);
+        benchmark::DoNotOptimize(w.outPositions.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * v));
+    state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * v * m3gbench::SkinStreamRoof::kBytesPerVertex));
+    state.counters["per_vertex"] =
+        benchmark::Counter(static_cast<double>(v), benchmark::Counter::kIsIterationInvariantRate |
+                                                       benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_SkinStreamRoof)
+    ->ArgNames({"vertices", "parallel"})
+    ->ArgsProduct({{100, 350, 500, 1200, 10000, 100000, 1000000}, {0, 1}})
+    ->Unit(benchmark::kMicrosecond)
+    ->UseRealTime();
+
 void BM_Morph(benchmark::State& state) {
     const auto v = static_cast<std::size_t>(state.range(0));
     const int targets = static_cast<int>(state.range(1));

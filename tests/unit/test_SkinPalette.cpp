@@ -2,12 +2,21 @@
 // expected matrix is worked out by hand in the comments.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <iterator>
+#include <random>
 #include <vector>
 
+#include <m3g/skin/Isa.h>
 #include <m3g/skin/Palette.h>
 
+#include "SkinReference.h"
+
+using m3g::skin::Isa;
+using m3g::skin::isaSupported;
 using m3g::skin::PaletteEntry;
 using m3g::skin::PaletteJob;
 using Mat = std::array<float, 16>;
@@ -135,4 +144,43 @@ TEST(SkinPalette, SeveralBonesAndTheBottomRowIsIgnored) {
     ASSERT_TRUE(job.run());
     expectRows(out[0].position, {1, 0, 0, 1, 0, 1, 0, 0, 0, 0, 1, 0}, "bone 0");
     expectRows(out[1].position, {1, 0, 0, 0, 0, 1, 0, 7, 0, 0, 1, 0}, "bone 1");
+}
+
+// The AVX2 path (FMAs on doubles, rows as vectors) against the plain loop:
+// random affine bones, a singular one (scaled to a plane) and a translation
+// only; the entries agree to float rounding.
+TEST(SkinPalette, Avx2PathAgreesWithPlainLoop) {
+    if (!isaSupported(Isa::Avx2)) GTEST_SKIP() << "avx2 not supported by this CPU";
+    std::mt19937 rng(11);
+    std::vector<float> a, r;
+    for (int b = 0; b < 40; ++b) {
+        const auto x = m3gtest::randomAffine(rng), y = m3gtest::randomAffine(rng);
+        a.insert(a.end(), x.begin(), x.end());
+        r.insert(r.end(), y.begin(), y.end());
+    }
+    const float flat[16] = {1, 0, 0, 2, 0, 1, 0, 3, 0, 0, 0, 4, 0, 0, 0, 1};  // z scaled to 0
+    const float moved[16] = {1, 0, 0, -5, 0, 1, 0, 6, 0, 0, 1, 7, 0, 0, 0, 1};
+    a.insert(a.end(), std::begin(flat), std::end(flat));
+    r.insert(r.end(), std::begin(moved), std::end(moved));
+    a.insert(a.end(), std::begin(moved), std::end(moved));
+    r.insert(r.end(), std::begin(flat), std::end(flat));
+    const std::size_t bones = a.size() / 16;
+    std::vector<PaletteEntry> plain(bones), avx2(bones);
+    PaletteJob job;
+    job.boneCount = bones;
+    job.boneToMesh = a;
+    job.atRest = r;
+    job.output = plain;
+    job.isa = Isa::Scalar;
+    ASSERT_TRUE(job.run());
+    job.output = avx2;
+    job.isa = Isa::Avx2;
+    ASSERT_TRUE(job.run());
+    for (std::size_t b = 0; b < bones; ++b)
+        for (int i = 0; i < 12; ++i) {
+            const float p = plain[b].position[i], q = avx2[b].position[i];
+            EXPECT_NEAR(q, p, 1e-6f * std::max(1.0f, std::abs(p))) << "bone " << b << " position " << i;
+            const float n = plain[b].normal[i], m = avx2[b].normal[i];
+            EXPECT_NEAR(m, n, 1e-6f * std::max(1.0f, std::abs(n))) << "bone " << b << " normal " << i;
+        }
 }

@@ -13,6 +13,7 @@
 #include <cstring>
 #include <numeric>
 #include <random>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -450,11 +451,28 @@ struct RandomMesh {
     float scale = 0.75f;
     std::array<float, 3> bias{0.5f, -1.0f, 2.0f};
 
-    RandomMesh(std::uint32_t seed, std::size_t vertexCount, int bones, int recordCount) : vertices(vertexCount) {
+    /// recordCount random addTransform records; or, with runLength > 0,
+    /// records in runs the way exporters write skins: every run of
+    /// runLength vertices gets `recordCount` distinct bones (1..4) with
+    /// random weights, so neighbours share their influences.
+    RandomMesh(std::uint32_t seed, std::size_t vertexCount, int bones, int recordCount, int runLength = 0)
+        : vertices(vertexCount) {
         std::mt19937 rng(seed);
         std::uniform_int_distribution<int> bone(0, bones - 1), weight(1, 6), len(1, 40);
         std::uniform_int_distribution<int> first(0, static_cast<int>(vertexCount) - 1);
-        for (int i = 0; i < recordCount; ++i) {
+        if (runLength > 0) {
+            std::vector<int> pool(static_cast<std::size_t>(bones));
+            std::iota(pool.begin(), pool.end(), 0);
+            for (int f = 0; f < static_cast<int>(vertexCount); f += runLength) {
+                const int c = std::min(runLength, static_cast<int>(vertexCount) - f);
+                std::shuffle(pool.begin(), pool.end(), rng);
+                for (int k = 0; k < recordCount; ++k) {
+                    records.push_back({pool[static_cast<std::size_t>(k)], weight(rng), f, c});
+                    table.add(records.back().bone, records.back().weight, f, c);
+                }
+            }
+        }
+        for (int i = 0; runLength == 0 && i < recordCount; ++i) {
             const int f = first(rng);
             const int c = std::min(len(rng), static_cast<int>(vertexCount) - f);
             records.push_back({bone(rng), weight(rng), f, c});
@@ -572,6 +590,129 @@ TEST(SkinningJob, ParallelRunIsBitIdenticalForAnyThreadCount) {
                 EXPECT_EQ(0, std::memcmp(nrm.data(), n2.data(), nrm.size() * sizeof(float)))
                     << isaName(isa) << ", " << threads << " threads, grain " << grain;
             }
+        }
+    }
+}
+
+// Runs of vertices sharing their bones and weights (what addTransform ranges
+// give, and what the AVX2 kernel's shared-influence block path takes), runs
+// not aligned to its 8-vertex blocks (13 vertices), a list that is the whole
+// mesh (consecutive) or every other vertex, and chunk grains that cut blocks:
+// every path agrees with the double reference, and the parallel runs are
+// bit-identical to run().
+TEST(SkinningJob, SharedInfluenceRunsAgreeAndAreBitIdenticalAcrossChunks) {
+    for (int k = 1; k <= 4; ++k) {
+        for (int run : {16, 13}) {
+            RandomMesh m(100u + static_cast<std::uint32_t>(k), 3001, 30, k, run);
+            const auto pal = paletteOf(m);
+            const std::vector<double> mesh = m.meshSpace();
+            const std::vector<double> a(m.boneToMesh.begin(), m.boneToMesh.end()), r(m.atRest.begin(), m.atRest.end());
+            const std::vector<double> n(m.normals.begin(), m.normals.end());
+            const auto ref = m3gtest::referenceSkin(m.records, m.n, a, r, m.vertices, mesh, n);
+            std::vector<std::uint32_t> all(m.vertices), odd;
+            std::iota(all.begin(), all.end(), 0u);
+            for (std::uint32_t v = 1; v < m.vertices; v += 2) odd.push_back(v);
+            for (Isa isa : kPaths) {
+                if (!isaSupported(isa)) continue;
+                for (const auto* list : {&all, &odd}) {
+                    const std::string what = std::string(isaName(isa)) + ", " + std::to_string(k) + " influences, run " +
+                                             std::to_string(run) + (list == &odd ? ", odd vertices" : ", all vertices");
+                    auto skin = [&](std::vector<float>& pos, std::vector<float>& nrm, ThreadPool* pool,
+                                    std::size_t grain) {
+                        pos.assign(m.vertices * 3, -999.0f);
+                        nrm.assign(m.vertices * 3, -999.0f);
+                        SkinningJob job;
+                        job.vertices = *list;
+                        job.vertexCount = m.vertices;
+                        job.influenceCount = k;
+                        job.influenceStride = m.n;
+                        job.boneIndices = m.table.bones();
+                        job.boneWeights = m.table.weights();
+                        job.palette = pal;
+                        job.positionScale = m.scale;
+                        job.positionBias = m.bias;
+                        job.inPositions = m.raw;
+                        job.inNormals = m.normals;
+                        job.outPositions = pos;
+                        job.outNormals = nrm;
+                        job.isa = isa;
+                        return pool ? job.runParallel(*pool, grain) : job.run();
+                    };
+                    std::vector<float> pos, nrm;
+                    ASSERT_TRUE(skin(pos, nrm, nullptr, 0)) << what;
+                    std::vector<double> refP(m.vertices * 3, -999.0), refN(m.vertices * 3, -999.0);
+                    for (std::uint32_t v : *list)
+                        for (int c = 0; c < 3; ++c) {
+                            refP[v * 3 + c] = ref.positions[v * 3 + c];
+                            refN[v * 3 + c] = ref.normals[v * 3 + c];
+                        }
+                    EXPECT_TRUE(m3gtest::closeXyz(pos, refP)) << what << " positions";
+                    EXPECT_TRUE(m3gtest::closeXyz(nrm, refN)) << what << " normals";
+                    for (int threads : {1, 2, 3}) {
+                        ThreadPool pool(threads);
+                        for (std::size_t grain : {1u, 5u, 7u, 12u, 256u}) {
+                            std::vector<float> p2, n2;
+                            ASSERT_TRUE(skin(p2, n2, &pool, grain)) << what;
+                            EXPECT_EQ(0, std::memcmp(pos.data(), p2.data(), pos.size() * sizeof(float)))
+                                << what << ", " << threads << " threads, grain " << grain;
+                            EXPECT_EQ(0, std::memcmp(nrm.data(), n2.data(), nrm.size() * sizeof(float)))
+                                << what << ", " << threads << " threads, grain " << grain;
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+// Influence arrays that end right after the last vertex's used slots (stride
+// 4, 2 influences: the last vertex's slots 2 and 3 are not there): valid, and
+// every path gives the same results (the AVX2 shared-influence test reads all
+// four slots of eight vertices, so it must not run on that last block).
+TEST(SkinningJob, ShortInfluenceArraysAreReadOnlyWhereValid) {
+    const std::vector<PaletteEntry> pal = palette({translation(1, 2, 3), kRz90});
+    const std::size_t n = 16;
+    std::vector<std::int32_t> bones;
+    std::vector<float> weights;
+    for (std::size_t v = 0; v < n; ++v) {
+        bones.insert(bones.end(), {0, 1, -1, -1});
+        weights.insert(weights.end(), {0.25f, 0.75f, 0.0f, 0.0f});
+    }
+    bones.resize((n - 1) * 4 + 2);
+    weights.resize((n - 1) * 4 + 2);
+    std::vector<float> in(n * 3), nin(n * 3);
+    for (std::size_t i = 0; i < n * 3; ++i) {
+        in[i] = static_cast<float>(i % 7) - 3.0f;
+        nin[i] = static_cast<float>(i % 5) - 1.5f;
+    }
+    std::vector<std::uint32_t> list(n);
+    std::iota(list.begin(), list.end(), 0u);
+    std::vector<float> expectP, expectN;
+    for (Isa isa : kPaths) {
+        if (!isaSupported(isa)) continue;
+        std::vector<float> out(n * 3, -9.0f), nout(n * 3, -9.0f);
+        SkinningJob job;
+        job.vertices = list;
+        job.vertexCount = n;
+        job.influenceCount = 2;
+        job.influenceStride = 4;
+        job.boneIndices = bones;
+        job.boneWeights = weights;
+        job.palette = pal;
+        job.inPositions = in;
+        job.inNormals = nin;
+        job.outPositions = out;
+        job.outNormals = nout;
+        job.isa = isa;
+        ASSERT_TRUE(job.run()) << isaName(isa);
+        if (expectP.empty()) {
+            expectP = out;
+            expectN = nout;
+            continue;
+        }
+        for (std::size_t i = 0; i < n * 3; ++i) {
+            EXPECT_NEAR(out[i], expectP[i], 1e-5f) << isaName(isa) << " position " << i;
+            EXPECT_NEAR(nout[i], expectN[i], 1e-5f) << isaName(isa) << " normal " << i;
         }
     }
 }

@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <span>
 
+#include <m3g/skin/Isa.h>
+
 namespace m3g::skin {
 
 /// One bone's matrices, std430-compatible: read it in GLSL as
@@ -30,7 +32,8 @@ static_assert(sizeof(PaletteEntry) == 96, "PaletteEntry must match the std430 la
 /// index row * 4 + col), 16 floats per bone. Only their top three rows are
 /// used: node transforms are affine (Node::setTransform rejects a W row other
 /// than 0 0 0 1), so the products are too. The product and the inverse are
-/// computed in double precision and rounded once.
+/// computed in double precision and rounded once (on AVX2 + FMA CPUs with
+/// FMAs, which can round the double intermediates differently).
 struct PaletteJob {
     /// Number of entries to compute.
     std::size_t boneCount = 0;
@@ -40,9 +43,12 @@ struct PaletteJob {
     std::span<const float> atRest;
     /// At least boneCount entries.
     std::span<PaletteEntry> output;
+    /// Which code path runs (Scalar or Avx2; Sse2 runs the plain loop); an
+    /// unsupported one makes validate() false.
+    Isa isa = Isa::Auto;
 
     /// True if the spans are large enough: 16 * boneCount floats each and
-    /// boneCount entries. (Non-finite elements are not rejected: they give
+    /// boneCount entries, and the ISA is supported. (Non-finite elements are not rejected: they give
     /// non-finite entries, as the plain formula would.)
     bool validate() const noexcept;
     /// validate(), then writes output[0 .. boneCount). Returns validate().

@@ -32,6 +32,8 @@ public:
     /// spread over the threads, and returns when all have returned. `fn`
     /// must not throw. Calls from several threads at once are safe: a call
     /// made while another job is running runs its tasks on its own thread.
+    /// Tasks are claimed one at a time; a worker that has not woken up by
+    /// the time every task is claimed (a busy machine) is not waited for.
     void run(std::size_t tasks, void (*fn)(void* context, std::size_t task), void* context) noexcept;
 
     /// run() with a callable `f(std::size_t task)`; no allocation.
@@ -60,7 +62,8 @@ private:
     void* context_ = nullptr;
     std::size_t tasks_ = 0;
     std::atomic<std::size_t> next_{0};
-    std::size_t doneWorkers_ = 0;  // workers finished with the current job
+    bool open_ = false;        // workers may still join the current job
+    std::size_t active_ = 0;   // workers inside the current job
 };
 
 }  // namespace m3g::skin
