@@ -8,6 +8,7 @@
 #include <cstring>
 #include <memory>
 #include <sstream>
+#include <string_view>
 #include <vector>
 
 namespace m3g::vk {
@@ -660,6 +661,19 @@ void setDebugView(const DebugView& view) noexcept {
 }
 
 DebugView debugView() noexcept { return DebugView{gWireframe.load(), gUnlit.load()}; }
+
+namespace {
+std::atomic<bool>& clampLitFlag() noexcept {
+    static std::atomic<bool> flag{[] {
+        const char* v = std::getenv("M3G_CLAMP_LIGHTING");
+        return v != nullptr && std::string_view(v) == "1";
+    }()};
+    return flag;
+}
+}  // namespace
+
+void setLitColorClamping(bool clamp) noexcept { clampLitFlag() = clamp; }
+bool litColorClamping() noexcept { return clampLitFlag().load(); }
 std::string lastValidationMessage() {
     std::lock_guard lock(gMessageMutex);
     return gLastMessage;

@@ -173,6 +173,7 @@ void Renderer::ensureTargetImages(std::uint32_t width, std::uint32_t height, VkS
 void Renderer::begin(Graphics3D& g3d, bool coveredByClear) {
     if (recording_) return;
     debug_ = debugView();
+    clampLit_ = litColorClamping();
     const auto w = static_cast<std::uint32_t>(g3d.targetWidth()), h = static_cast<std::uint32_t>(g3d.targetHeight());
     // ANTIALIAS: multisampling when the device has it (spec §4.26 hints).
     const bool antialias = (g3d.getHints() & Graphics3D::ANTIALIAS) != 0 && ctx_->maxSamples() != VK_SAMPLE_COUNT_1_BIT;
@@ -617,6 +618,7 @@ void Renderer::drawSubmesh(const detail::RenderQueue& queue, const detail::Rende
     if (pm && pm->getShading() == PolygonMode::SHADE_FLAT) flags |= F_FLAT;
     if (material) {
         flags |= F_LIGHTING;
+        if (clampLit_) flags |= F_CLAMP_LIT;
         if (material->isVertexColorTrackingEnabled()) flags |= F_COLOR_TRACKING;
         if (pm && pm->isTwoSidedLightingEnabled()) flags |= F_TWO_SIDED;
         if (pm && pm->isLocalCameraLightingEnabled()) flags |= F_LOCAL_CAMERA;
