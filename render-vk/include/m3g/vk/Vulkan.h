@@ -9,6 +9,8 @@
 //                      else virtual, else a CPU device (lavapipe).
 //   M3G_VK_VALIDATION  1 = enable VK_LAYER_KHRONOS_validation, 0 = disable;
 //                      default: on in Debug builds, off otherwise.
+//   M3G_VK_DEPTH_BITS  32 = prefer a 32-bit float depth buffer; default a
+//                      16-bit one, as Nokia's engine had (docs/rendering.md).
 #pragma once
 
 #include <cstdint>
