@@ -8,6 +8,7 @@
 #include <cstring>
 #include <memory>
 #include <sstream>
+#include <string_view>
 #include <vector>
 
 namespace m3g::vk {
@@ -352,9 +353,17 @@ Context::Context() {
             }
         if (!found) throw VulkanError("m3g-vk: device \"" + info_.name + "\" has no graphics+compute queue");
 
-        // Depth: D32_SFLOAT or D16_UNORM are the safe choices (guide §8).
+        // Depth: 16-bit UNORM, as the reference renders (Nokia's engine asks
+        // EGL for at least 8 depth bits and EGL picks the smallest: Mesa's
+        // 16), so surfaces closer than 1/65535 of the depth range tie under
+        // LEQUAL the same way. D16_UNORM is mandatory for depth attachments;
+        // M3G_VK_DEPTH_BITS=32 prefers D32_SFLOAT (guide §8) for precision.
+        const char* depthBits = std::getenv("M3G_VK_DEPTH_BITS");
+        const bool wide = depthBits != nullptr && std::string_view(depthBits) == "32";
         depthFormat_ = VK_FORMAT_UNDEFINED;
-        for (VkFormat f : {VK_FORMAT_D32_SFLOAT, VK_FORMAT_D16_UNORM}) {
+        const VkFormat narrowFirst[2] = {VK_FORMAT_D16_UNORM, VK_FORMAT_D32_SFLOAT};
+        const VkFormat wideFirst[2] = {VK_FORMAT_D32_SFLOAT, VK_FORMAT_D16_UNORM};
+        for (VkFormat f : wide ? wideFirst : narrowFirst) {
             VkFormatProperties fp;
             vkGetPhysicalDeviceFormatProperties(physical_, f, &fp);
             if (fp.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT) {
@@ -660,6 +669,19 @@ void setDebugView(const DebugView& view) noexcept {
 }
 
 DebugView debugView() noexcept { return DebugView{gWireframe.load(), gUnlit.load()}; }
+
+namespace {
+std::atomic<bool>& clampLitFlag() noexcept {
+    static std::atomic<bool> flag{[] {
+        const char* v = std::getenv("M3G_CLAMP_LIGHTING");
+        return v != nullptr && std::string_view(v) == "1";
+    }()};
+    return flag;
+}
+}  // namespace
+
+void setLitColorClamping(bool clamp) noexcept { clampLitFlag() = clamp; }
+bool litColorClamping() noexcept { return clampLitFlag().load(); }
 std::string lastValidationMessage() {
     std::lock_guard lock(gMessageMutex);
     return gLastMessage;

@@ -23,6 +23,7 @@ enum DrawFlags : std::int32_t {
     F_HAS_COLORS = 32,
     F_LOCAL_CAMERA = 64,
     F_CLIP_SPACE = 128,
+    F_CLAMP_LIT = 256,  ///< clamp lit vertex colours (setLitColorClamping)
 };
 
 /// Texture environment functions as the shader numbers them.

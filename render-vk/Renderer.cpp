@@ -197,6 +197,7 @@ void Renderer::ensureTargetImages(std::uint32_t width, std::uint32_t height, VkS
 void Renderer::begin(Graphics3D& g3d, bool coveredByClear) {
     if (recording_) return;
     debug_ = debugView();
+    clampLit_ = litColorClamping();
     const auto w = static_cast<std::uint32_t>(g3d.targetWidth()), h = static_cast<std::uint32_t>(g3d.targetHeight());
     // ANTIALIAS: multisampling when the device has it (spec §4.26 hints).
     const bool antialias = (g3d.getHints() & Graphics3D::ANTIALIAS) != 0 && ctx_->maxSamples() != VK_SAMPLE_COUNT_1_BIT;
@@ -529,10 +530,18 @@ void Renderer::drawQuad(VkDescriptorSet uniformSet, std::uint32_t offset, VkDesc
         quadOffset_ = 0;
     }
     // Two triangles, counter-clockwise; positions then texcoords per vertex.
-    const float v[6][6] = {
-        {r[0], r[1], z, t[0], t[3], 0}, {r[2], r[1], z, t[2], t[3], 0}, {r[2], r[3], z, t[2], t[1], 0},
-        {r[0], r[1], z, t[0], t[3], 0}, {r[2], r[3], z, t[2], t[1], 0}, {r[0], r[3], z, t[0], t[1], 0},
-    };
+    // The order is the triangle strip top-left, bottom-left, top-right,
+    // bottom-right as GL splits it, which is how Nokia's engine draws
+    // backgrounds and sprites: attributes are interpolated from each
+    // triangle's first vertex, so a pixel centre exactly on a texel edge (a
+    // 64-texel image over 240 rows has one every 15 rows) then rounds as in the
+    // reference renders: to the texel after the edge, as exact arithmetic says
+    // (VkTest.BackgroundNearestRowsAtExactTexelEdges).
+    const float tl[6] = {r[0], r[3], z, t[0], t[1], 0}, bl[6] = {r[0], r[1], z, t[0], t[3], 0},
+                tr[6] = {r[2], r[3], z, t[2], t[1], 0}, br[6] = {r[2], r[1], z, t[2], t[3], 0};
+    const float* order[6] = {tl, bl, tr, tr, bl, br};
+    float v[6][6];
+    for (int i = 0; i < 6; ++i) std::memcpy(v[i], order[i], sizeof(v[i]));
     std::memcpy(static_cast<char*>(quads_.mapped) + quadOffset_, v, sizeof(v));
     bindPipeline(key);
     setDepthState(depthTest, depthWrite, 0.0f, 0.0f);
@@ -641,6 +650,7 @@ void Renderer::drawSubmesh(const detail::RenderQueue& queue, const detail::Rende
     if (pm && pm->getShading() == PolygonMode::SHADE_FLAT) flags |= F_FLAT;
     if (material) {
         flags |= F_LIGHTING;
+        if (clampLit_) flags |= F_CLAMP_LIT;
         if (material->isVertexColorTrackingEnabled()) flags |= F_COLOR_TRACKING;
         if (pm && pm->isTwoSidedLightingEnabled()) flags |= F_TWO_SIDED;
         if (pm && pm->isLocalCameraLightingEnabled()) flags |= F_LOCAL_CAMERA;

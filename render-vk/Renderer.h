@@ -87,6 +87,7 @@ private:
     Image* target_ = &color_;  // the colour image of this frame: color_ or a window's back image
     WindowTarget* window_ = nullptr;  // the bound target when it is a window
     DebugView debug_;                 // read at each frame's start
+    bool clampLit_ = false;           // litColorClamping(), read at each frame's start
     Image msaaColor_, initial_;  // ANTIALIAS: multisampled colour and the prior contents to start from
     VkSampleCountFlagBits samples_ = VK_SAMPLE_COUNT_1_BIT;
     std::uint32_t width_ = 0, height_ = 0;

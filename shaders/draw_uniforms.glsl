@@ -17,6 +17,7 @@ const int F_HAS_NORMALS = 16;
 const int F_HAS_COLORS = 32;      // else defaultColor
 const int F_LOCAL_CAMERA = 64;    // specular with the real eye vector
 const int F_CLIP_SPACE = 128;     // positions are NDC already (sprites, background)
+const int F_CLAMP_LIT = 256;      // clamp lit colours to [0, 1] per vertex (GL ES 1.1 spec); else as Mesa's GL ES 1.1
 
 // texEnv.x function: 0 = unit off, 1 REPLACE, 2 MODULATE, 3 DECAL, 4 BLEND, 5 ADD
 // texEnv.y: texture has colour channels; texEnv.z: texture has alpha;

@@ -60,7 +60,14 @@ vec4 lightVertex(vec3 eyePos, vec3 n, vec4 ambient, vec4 diffuse) {
         }
         color += att * contribution;
     }
-    return vec4(clamp(color, 0.0, 1.0), clamp(diffuse.a, 0.0, 1.0));
+    // The reference (Nokia's engine on Mesa's OpenGL ES 1.1) interpolates the
+    // lit colour unclamped: Mesa enables vertex colour clamping only for
+    // desktop compatibility contexts, so a vertex lit above 1 brightens a
+    // MODULATE texture and the interpolation between vertices. The colour is
+    // clamped only when written to the target. F_CLAMP_LIT clamps here instead,
+    // as the OpenGL ES 1.1 specification says (colours are clamped after lighting).
+    if (has(F_CLAMP_LIT)) color = clamp(color, 0.0, 1.0);
+    return vec4(color, clamp(diffuse.a, 0.0, 1.0));
 }
 
 vec4 texCoord(vec3 raw, int unit) {

@@ -7,6 +7,8 @@
 #include "VkTestSupport.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <string>
 
 using namespace m3g;
 using m3gtest::begin;
@@ -177,6 +179,31 @@ TEST_F(VkTest, DepthOffset) {
     EXPECT_PIXEL_TOL(*img, 16, 48, 0, Rgba{255, 0, 0, 255});
     EXPECT_PIXEL_TOL(*img, 48, 48, 0, Rgba{0, 255, 0, 255});
     expectGolden(*img, "compositing_depth_offset", 3, 0.01);
+}
+
+TEST_F(VkTest, DepthBufferIsSixteenBitLikeTheReference) {
+    // The depth buffer has 16-bit resolution, as Nokia's engine gets from
+    // EGL (it asks for at least 8 bits; EGL picks the smallest, 16 on Mesa).
+    // Red at z -0.5: depth (z + 1) / 2 = 0.25, stored as 0.25 x 65535 =
+    // 16383.75 -> 16384. Left: green 2^-17 farther (depth 0.25 + 2^-18,
+    // 16383.75 + 0.25 = 16384.0 -> 16384): the same stored value, so it passes
+    // LEQUAL and covers the red (with 32-bit float depth it would fail).
+    // Right: green 2^-13 farther (depth + 2^-14, 16387.75 -> 16388) fails.
+    if (const char* bits = std::getenv("M3G_VK_DEPTH_BITS"); bits && std::string(bits) == "32")
+        GTEST_SKIP() << "M3G_VK_DEPTH_BITS=32 selects 32-bit float depth";
+    auto img = target(64, 64);
+    Ref<Camera> cam(new Camera());
+    Graphics3D* g = begin(img.get(), cam.get());
+    g->clear(nullptr);
+    auto plain = appearance(compositing().get());
+    draw(g, coloured(makeQuad(-1, -1, 1, 1, -0.5f), 0xFFFF0000u), plain.get());
+    const Transform nearlyCoplanar = m3gtest::translation(0, 0, 1.0f / 131072.0f);  // 2^-17
+    const Transform behind = m3gtest::translation(0, 0, 1.0f / 8192.0f);            // 2^-13
+    draw(g, coloured(makeQuad(-1, -1, 0, 1, -0.5f), 0xFF00FF00u), plain.get(), &nearlyCoplanar);
+    draw(g, coloured(makeQuad(0, -1, 1, 1, -0.5f), 0xFF00FF00u), plain.get(), &behind);
+    g->releaseTarget();
+    EXPECT_PIXEL_TOL(*img, 16, 32, 0, Rgba{0, 255, 0, 255});
+    EXPECT_PIXEL_TOL(*img, 48, 32, 0, Rgba{255, 0, 0, 255});
 }
 
 TEST_F(VkTest, ColorAndAlphaWriteMasks) {

@@ -2,7 +2,8 @@
 // colours and shading, and fog (§5.6). Scenes are flat quads facing +Z under
 // an identity camera, so every expected level follows from the formulas:
 // colour = emissive + sum_i att_i spot_i (L_i ambient_m + max(N.L, 0) L_i
-// diffuse_m + (N.L > 0 ? max(N.H, 0)^shininess : 0) L_i specular_m), clamped.
+// diffuse_m + (N.L > 0 ? max(N.H, 0)^shininess : 0) L_i specular_m), clamped
+// to [0, 1] when written (interpolated unclamped, as the reference renders).
 #include "SceneKit.h"
 #include "VkTestSupport.h"
 
@@ -589,4 +590,66 @@ TEST_F(VkTest, FlatShadingLitUsesLastVertex) {
     EXPECT_PIXEL(*img, 56, 24, grey(0.8, 255));
     EXPECT_PIXEL(*img, 61, 2, grey(0.8, 255));
     expectGolden(*img, "shading_flat_lit", 3, 0.002);
+}
+
+namespace {
+
+/// Draws the lit-colour range scene into a 64x64 target: top half a
+/// quad textured with a 0x808080 RGB texel (MODULATE), bottom half an
+/// untextured quad tracking vertex colours white (left edge) to black (right
+/// edge); both under a white Material, a directional light along the normal
+/// (N.L = 1) and an ambient light of intensity 0.5.
+void drawLitRangeScene(Image2D* img) {
+    Ref<Camera> cam(new Camera());
+    Graphics3D* g = begin(img, cam.get());
+    g->clear(nullptr);
+    Ref<Light> dir = light(Light::DIRECTIONAL);
+    Ref<Light> amb = light(Light::AMBIENT, 0xFFFFFF, 0.5f);
+    g->addLight(dir.get(), nullptr);
+    g->addLight(amb.get(), nullptr);
+    Ref<Texture2D> tex(new Texture2D(m3gtest::solidImage(Image2D::RGB, 2, 2, {0x80, 0x80, 0x80}).get()));
+    tex->setBlending(Texture2D::FUNC_MODULATE);
+    auto texturedApp = appearance(material(0xFFFFFF, 0xFFFFFFFF).get());
+    texturedApp->setTexture(0, tex.get());
+    Quad top = makeQuad(-1, 0, 1, 1);
+    g->render(top.vb.get(), top.ib.get(), texturedApp.get(), nullptr);
+    Ref<Material> tracking = material(0xFFFFFF, 0xFFFFFFFF);
+    tracking->setVertexColorTrackingEnable(true);
+    auto trackingApp = appearance(tracking.get());
+    Quad bottom = makeQuad(-1, -1, 1, 0);  // vertices BL, BR, TL, TR
+    m3gtest::setColors(*bottom.vb, {0xFFFFFFFFu, 0xFF000000u, 0xFFFFFFFFu, 0xFF000000u});
+    g->render(bottom.vb.get(), bottom.ib.get(), trackingApp.get(), nullptr);
+    g->releaseTarget();
+}
+
+}  // namespace
+
+TEST_F(VkTest, LitColourAboveOneIsInterpolatedUnclampedByDefault) {
+    // As the reference renders (Nokia's engine on Mesa's OpenGL ES 1.1, which
+    // clamps vertex colours only in desktop compatibility contexts): the lit
+    // colour is 0.5 (ambient) + 1 (N.L) = 1.5 times the material colour and
+    // stays 1.5 until the fragment is written.
+    //   Top: 1.5 x 128/255 = 0.7529 -> 192 (clamped per vertex: 128).
+    //   Bottom, pixel column x (centre at (x + 0.5) / 64 from the left edge):
+    //   1.5 (1 - (x + 0.5) / 64): x = 16 -> 1.113 -> 255, x = 32 -> 0.7383
+    //   -> 188, x = 48 -> 0.3633 -> 93. Clamped per vertex the left edge is 1:
+    //   0.7422 -> 189, 0.4922 -> 126, 0.2422 -> 62.
+    ASSERT_FALSE(vk::litColorClamping()) << "default is the reference behaviour (M3G_CLAMP_LIGHTING unset)";
+    auto img = target(64, 64);
+    drawLitRangeScene(img.get());
+    EXPECT_PIXEL(*img, 32, 16, grey(1.5 * c8(0x80), 255));
+    EXPECT_PIXEL(*img, 16, 48, grey(1.5 * (1.0 - 16.5 / 64.0), 255));
+    EXPECT_PIXEL(*img, 32, 48, grey(1.5 * (1.0 - 32.5 / 64.0), 255));
+    EXPECT_PIXEL(*img, 48, 48, grey(1.5 * (1.0 - 48.5 / 64.0), 255));
+    expectGolden(*img, "lighting_lit_colour_unclamped", 3, 0.0);
+
+    // The same scene with the GL ES 1.1 specification's per-vertex clamp.
+    vk::setLitColorClamping(true);
+    auto clamped = target(64, 64);
+    drawLitRangeScene(clamped.get());
+    vk::setLitColorClamping(false);
+    EXPECT_PIXEL(*clamped, 32, 16, grey(c8(0x80), 255));
+    EXPECT_PIXEL(*clamped, 16, 48, grey(1.0 - 16.5 / 64.0, 255));
+    EXPECT_PIXEL(*clamped, 32, 48, grey(1.0 - 32.5 / 64.0, 255));
+    EXPECT_PIXEL(*clamped, 48, 48, grey(1.0 - 48.5 / 64.0, 255));
 }

@@ -361,3 +361,35 @@ TEST_F(VkTest, BackgroundRgbImageOnRgbTarget) {
     EXPECT_PIXEL_TOL(*rgbTarget, 15, 16, 0, kBlue);
     expectGolden(*rgbTarget, "background_rgb_target", 3, 0.0);
 }
+
+TEST_F(VkTest, BackgroundNearestRowsAtExactTexelEdges) {
+    // A 64x64 image stretched over 320x240 (the corpus scenes' sky): 3.75
+    // pixels per texel row, so the centre of pixel row y = 15m + 7 falls
+    // exactly on a texel edge: (y + 0.5) * 64 / 240 = 4m + 2. Nearest sampling
+    // takes texel floor((y + 0.5) * 64 / 240) on every row, the ties included,
+    // as Nokia's renders show (nokia_on_ice.m3g rows 7 and 22 repeat texel
+    // rows 2 and 6). Texel row r is grey 4r, so each pixel names its texel row.
+    auto img = target(320, 240, 0xFF000000u);
+    std::vector<std::uint8_t> px;
+    for (int r = 0; r < 64; ++r)
+        for (int c = 0; c < 64; ++c) {
+            px.insert(px.end(), 3, static_cast<std::uint8_t>(4 * r));
+            px.push_back(255);
+        }
+    Ref<Image2D> rows(new Image2D(Image2D::RGBA, 64, 64, std::span<const std::uint8_t>(px)));  // the target's format
+    Ref<Background> bg(new Background());
+    bg->setImage(rows.get());
+    Graphics3D* g = Graphics3D::getInstance();
+    g->bindTarget(img.get());
+    g->clear(bg.get());
+    g->releaseTarget();
+    int mismatches = 0;
+    for (int y = 0; y < 240; ++y) {
+        const int texelRow = (2 * y + 1) * 64 / 480;  // floor((y + 0.5) * 64 / 240), exact
+        for (int x : {0, 77, 160, 319}) {
+            const auto r = m3gtest::pixelNear(*img, x, y, Rgba{4 * texelRow, 4 * texelRow, 4 * texelRow, 255}, 0);
+            if (!r && ++mismatches <= 5) ADD_FAILURE() << "row " << y << ": " << r.message();
+        }
+    }
+    EXPECT_EQ(mismatches, 0);
+}

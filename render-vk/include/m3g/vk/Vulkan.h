@@ -9,6 +9,8 @@
 //                      else virtual, else a CPU device (lavapipe).
 //   M3G_VK_VALIDATION  1 = enable VK_LAYER_KHRONOS_validation, 0 = disable;
 //                      default: on in Debug builds, off otherwise.
+//   M3G_VK_DEPTH_BITS  32 = prefer a 32-bit float depth buffer; default a
+//                      16-bit one, as Nokia's engine had (docs/rendering.md).
 #pragma once
 
 #include <cstdint>
@@ -64,6 +66,20 @@ struct DebugView {
 };
 void setDebugView(const DebugView& view) noexcept;
 DebugView debugView() noexcept;
+
+/// Whether lit vertex colours are clamped to [0, 1] before they are
+/// interpolated (applies to every Graphics3D from the next frame on).
+/// Off by default, matching the reference renders (Nokia's M3G engine on
+/// Mesa's OpenGL ES 1.1, ../shared/corpus/REFERENCE.md): Mesa clamps vertex
+/// colours only in desktop compatibility contexts, so a vertex lit above 1
+/// (e.g. a directional light plus an ambient light on a white Material)
+/// brightens a MODULATE texture and the colours interpolated towards it;
+/// the colour is clamped only when written to the target. On, the lit colour
+/// is clamped per vertex as the OpenGL ES 1.1 specification describes
+/// (M3G spec §5.5 via GL ES lighting). Environment variable
+/// M3G_CLAMP_LIGHTING=1 turns it on at start-up.
+void setLitColorClamping(bool clamp) noexcept;
+bool litColorClamping() noexcept;
 
 /// Counters since the device was created.
 struct RenderStats {
