@@ -419,9 +419,17 @@ Context::Context() {
         di.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
         di.ppEnabledExtensionNames = extensions.data();
         VkResult r = vkCreateDevice(physical_, &di, nullptr, &device_);
-        if (r != VK_SUCCESS)
-            throw VulkanError("m3g-vk: vkCreateDevice failed on \"" + info_.name + "\" (" + resultName(r) + "); " +
-                              kInstallHint);
+        if (r != VK_SUCCESS) {
+            // The driver loaded and showed the device, then refused it: a
+            // broken driver or a GPU that is gone. Name the device as
+            // M3G_VK_DEVICE selects it, and the other ways out.
+            const auto index = std::find(devices.begin(), devices.end(), physical_) - devices.begin();
+            throw VulkanError("m3g-vk: the Vulkan driver could not create a device on device " + std::to_string(index) +
+                              " \"" + info_.name + "\" (vkCreateDevice: " + resultName(r) + ", " +
+                              std::to_string(static_cast<int>(r)) + ")" + driverOverrides() +
+                              "; the driver or the GPU is not working (check with vulkaninfo): " + kInstallHint +
+                              ", or another driver with VK_DRIVER_FILES");
+        }
         volkLoadDevice(device_);
         vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
         pool_ = createCommandPool();

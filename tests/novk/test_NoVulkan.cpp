@@ -1,5 +1,6 @@
 // Without a usable Vulkan (no loader, no driver, a driver that cannot be
-// loaded or fails) the library must fail clearly at the first Graphics3D use
+// loaded, or one that shows a device and then fails vkCreateDevice:
+// fake_icd_no_device.c) the library must fail clearly at the first Graphics3D use
 // and keep everything else working. The device is created once per process,
 // so this program is run by CTest once per broken setup, with the loader's
 // environment (VK_DRIVER_FILES, LD_LIBRARY_PATH) set before it starts and
