@@ -32,24 +32,31 @@ m3gbench::SkinWorkload& skinWorkload(std::size_t v, int k, int bones) {
     return *slot;
 }
 
-void BM_Skin(benchmark::State& state) {
-    const auto v = static_cast<std::size_t>(state.range(0));
-    const int k = static_cast<int>(state.range(1)), bones = static_cast<int>(state.range(2));
-    const auto variant = static_cast<Variant>(state.range(3));
-    auto& w = skinWorkload(v, k, bones);
+/// Times `w.frame(variant)` (a skin or morph workload) over `vertices`;
+/// false (the benchmark skipped) when the CPU lacks the variant.
+template <class Workload>
+bool runFrames(benchmark::State& state, Workload& w, Variant variant, std::size_t vertices) {
     if (!w.frame(variant)) {
         state.SkipWithError("variant not supported on this CPU");
-        return;
+        return false;
     }
     for (auto _ : state) {
         w.frame(variant);
         benchmark::DoNotOptimize(w.outPositions.data());
         benchmark::ClobberMemory();
     }
-    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * v));
-    state.counters["per_vertex"] =
-        benchmark::Counter(static_cast<double>(v), benchmark::Counter::kIsIterationInvariantRate |
-                                                       benchmark::Counter::kInvert);
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * vertices));
+    state.counters["per_vertex"] = benchmark::Counter(
+        static_cast<double>(vertices), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+    return true;
+}
+
+void BM_Skin(benchmark::State& state) {
+    const auto v = static_cast<std::size_t>(state.range(0));
+    const int k = static_cast<int>(state.range(1)), bones = static_cast<int>(state.range(2));
+    const auto variant = static_cast<Variant>(state.range(3));
+    auto& w = skinWorkload(v, k, bones);
+    if (!runFrames(state, w, variant, v)) return;
     state.SetLabel(std::string(m3gbench::variantName(variant)) + " v=" + std::to_string(v) + " k=" +
                    std::to_string(k) + " bones=" + std::to_string(bones));
 }
@@ -79,19 +86,7 @@ void BM_SkinDistinct(benchmark::State& state) {
     static std::map<std::pair<std::size_t, int>, std::unique_ptr<m3gbench::SkinWorkload>> cache;
     auto& slot = cache[{v, k}];
     if (!slot) slot = std::make_unique<m3gbench::SkinWorkload>(v, k, 60, 1);
-    if (!slot->frame(variant)) {
-        state.SkipWithError("variant not supported on this CPU");
-        return;
-    }
-    for (auto _ : state) {
-        slot->frame(variant);
-        benchmark::DoNotOptimize(slot->outPositions.data());
-        benchmark::ClobberMemory();
-    }
-    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * v));
-    state.counters["per_vertex"] =
-        benchmark::Counter(static_cast<double>(v), benchmark::Counter::kIsIterationInvariantRate |
-                                                       benchmark::Counter::kInvert);
+    runFrames(state, *slot, variant, v);
 }
 BENCHMARK(BM_SkinDistinct)
     ->ArgNames({"vertices", "influences", "variant"})
@@ -134,19 +129,7 @@ void BM_Morph(benchmark::State& state) {
     static std::map<std::pair<std::size_t, int>, std::unique_ptr<m3gbench::MorphWorkload>> cache;
     auto& slot = cache[{v, targets}];
     if (!slot) slot = std::make_unique<m3gbench::MorphWorkload>(v, targets);
-    if (!slot->frame(variant)) {
-        state.SkipWithError("variant not supported on this CPU");
-        return;
-    }
-    for (auto _ : state) {
-        slot->frame(variant);
-        benchmark::DoNotOptimize(slot->outPositions.data());
-        benchmark::ClobberMemory();
-    }
-    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * v));
-    state.counters["per_vertex"] =
-        benchmark::Counter(static_cast<double>(v), benchmark::Counter::kIsIterationInvariantRate |
-                                                       benchmark::Counter::kInvert);
+    runFrames(state, *slot, variant, v);
 }
 
 void morphArgs(benchmark::internal::Benchmark* b) {

@@ -498,6 +498,27 @@ struct RandomMesh {
     }
 };
 
+/// A job skinning `vertices` of `m` (all with `influences` influences) into pos/nrm.
+SkinningJob meshJob(const RandomMesh& m, std::span<const std::uint32_t> vertices, int influences,
+                    const std::vector<PaletteEntry>& pal, Isa isa, std::vector<float>& pos, std::vector<float>& nrm) {
+    SkinningJob job;
+    job.vertices = vertices;
+    job.vertexCount = m.vertices;
+    job.influenceCount = influences;
+    job.influenceStride = m.n;
+    job.boneIndices = m.table.bones();
+    job.boneWeights = m.table.weights();
+    job.palette = pal;
+    job.positionScale = m.scale;
+    job.positionBias = m.bias;
+    job.inPositions = m.raw;
+    job.inNormals = m.normals;
+    job.outPositions = pos;
+    job.outNormals = nrm;
+    job.isa = isa;
+    return job;
+}
+
 /// Runs every group of the partition with `isa`; parallel on `pool` if given.
 void skinAll(const RandomMesh& m, const std::vector<PaletteEntry>& pal, Isa isa, std::vector<float>& pos,
              std::vector<float>& nrm, ThreadPool* pool = nullptr, std::size_t grain = 4096) {
@@ -506,21 +527,7 @@ void skinAll(const RandomMesh& m, const std::vector<PaletteEntry>& pal, Isa isa,
     pos.assign(m.vertices * 3, -999.0f);
     nrm.assign(m.vertices * 3, -999.0f);
     for (int c = 0; c <= part.maxInfluences(); ++c) {
-        SkinningJob job;
-        job.vertices = part.group(c);
-        job.vertexCount = m.vertices;
-        job.influenceCount = c;
-        job.influenceStride = m.n;
-        job.boneIndices = m.table.bones();
-        job.boneWeights = m.table.weights();
-        job.palette = pal;
-        job.positionScale = m.scale;
-        job.positionBias = m.bias;
-        job.inPositions = m.raw;
-        job.inNormals = m.normals;
-        job.outPositions = pos;
-        job.outNormals = nrm;
-        job.isa = isa;
+        SkinningJob job = meshJob(m, part.group(c), c, pal, isa, pos, nrm);
         ASSERT_TRUE(pool ? job.runParallel(*pool, grain) : job.run()) << "group " << c;
     }
 }
@@ -621,21 +628,7 @@ TEST(SkinningJob, SharedInfluenceRunsAgreeAndAreBitIdenticalAcrossChunks) {
                                     std::size_t grain) {
                         pos.assign(m.vertices * 3, -999.0f);
                         nrm.assign(m.vertices * 3, -999.0f);
-                        SkinningJob job;
-                        job.vertices = *list;
-                        job.vertexCount = m.vertices;
-                        job.influenceCount = k;
-                        job.influenceStride = m.n;
-                        job.boneIndices = m.table.bones();
-                        job.boneWeights = m.table.weights();
-                        job.palette = pal;
-                        job.positionScale = m.scale;
-                        job.positionBias = m.bias;
-                        job.inPositions = m.raw;
-                        job.inNormals = m.normals;
-                        job.outPositions = pos;
-                        job.outNormals = nrm;
-                        job.isa = isa;
+                        SkinningJob job = meshJob(m, *list, k, pal, isa, pos, nrm);
                         return pool ? job.runParallel(*pool, grain) : job.run();
                     };
                     std::vector<float> pos, nrm;
