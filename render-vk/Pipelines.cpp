@@ -73,15 +73,20 @@ VkPipeline Pipelines::get(const PipelineKey& key) {
 }
 
 void Pipelines::prewarm(std::uint8_t samples) {
-    // Every blend mode untextured and with one texture unit; REPLACE and
-    // ALPHA also alpha-tested (cut-out foliage, sprites).
+    // Every blend mode, lit and unlit, untextured and with an RGB texture
+    // modulated on unit 0 (the commonest textured draw).
     for (std::uint8_t blend = 0; blend < 5; ++blend) {
         for (std::uint8_t lit = 0; lit < 2; ++lit) {
-            get({blend, 0xF, samples, 0, 0, 0, 0, lit});
-            get({blend, 0xF, samples, 0, 0, 1, 0, lit});
+            PipelineKey key;
+            key.blend = blend;
+            key.samples = samples;
+            key.lighting = lit;
+            get(key);
+            key.texFunc[0] = 2;  // TEX_MODULATE
+            key.texFormat[0] = 1;
+            get(key);
         }
     }
-    for (std::uint8_t blend = 0; blend < 2; ++blend) get({blend, 0xF, samples, 0, 1, 1, 0, 1});
 }
 
 VkPipeline Pipelines::create(const PipelineKey& key) {
@@ -93,12 +98,13 @@ VkPipeline Pipelines::create(const PipelineKey& key) {
         VkSpecializationMapEntry{0, 0, sizeof(VkBool32)}, VkSpecializationMapEntry{1, sizeof(VkBool32), sizeof(VkBool32)}};
     const VkSpecializationInfo vertSpec{2, vertexEntries.data(), sizeof(vertexFeatures), vertexFeatures.data()};
     stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, vert_, "main", &vertSpec};
-    // m3g.frag's constant_ids 0..3: MAY_DISCARD, UNIT0, UNIT1, FOG.
-    const std::array<VkBool32, 4> features{key.discard ? VK_TRUE : VK_FALSE, (key.textures & 1) ? VK_TRUE : VK_FALSE,
-                                           (key.textures & 2) ? VK_TRUE : VK_FALSE, key.fog ? VK_TRUE : VK_FALSE};
-    std::array<VkSpecializationMapEntry, 4> entries{};
+    // m3g.frag's constant_ids 0..7 (all 32-bit).
+    const std::array<std::uint32_t, 8> features{key.discard,      key.texFunc[0], key.texFunc[1],
+                                                key.fog,          key.texFormat[0], key.texFormat[1],
+                                                key.flat,         (key.lighting & 2u) ? 1u : 0u};
+    std::array<VkSpecializationMapEntry, 8> entries{};
     for (std::uint32_t i = 0; i < entries.size(); ++i)
-        entries[i] = {i, static_cast<std::uint32_t>(i * sizeof(VkBool32)), sizeof(VkBool32)};
+        entries[i] = {i, static_cast<std::uint32_t>(i * sizeof(std::uint32_t)), sizeof(std::uint32_t)};
     const VkSpecializationInfo fragSpec{static_cast<std::uint32_t>(entries.size()), entries.data(), sizeof(features),
                                         features.data()};
     stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT, frag_, "main", &fragSpec};

@@ -23,14 +23,20 @@ struct PipelineKey {
     /// 1: the discards stay (alpha threshold, Background BORDER). Without them
     /// a rasteriser can also test depth before shading (llvmpipe does).
     std::uint8_t discard = 0;
-    std::uint8_t textures = 0;  ///< bit 0: unit 0 enabled, bit 1: unit 1
-    std::uint8_t fog = 0;       ///< 1: fog applied
-    /// Vertex-shader features (m3g.vert): bit 0 lighting, bit 1 two-sided.
+    /// Per texture unit: its function (DrawUniforms.h TexFunc, 0 = off) and
+    /// its image's channels (bit 0 colour, bit 1 alpha).
+    std::uint8_t texFunc[2] = {0, 0};
+    std::uint8_t texFormat[2] = {0, 0};
+    std::uint8_t fog = 0;   ///< 1: fog applied
+    std::uint8_t flat = 0;  ///< 1: SHADE_FLAT
+    /// Bit 0 lighting, bit 1 two-sided lighting (m3g.vert, and m3g.frag's
+    /// choice of back-face colours).
     std::uint8_t lighting = 0;
-    std::uint32_t packed() const noexcept {
-        return blend | (writeMask << 4) | (samples << 8) | (static_cast<std::uint32_t>(wireframe) << 16) |
-               (static_cast<std::uint32_t>(discard) << 17) | (static_cast<std::uint32_t>(textures) << 18) |
-               (static_cast<std::uint32_t>(fog) << 20) | (static_cast<std::uint32_t>(lighting) << 21);
+    std::uint64_t packed() const noexcept {
+        auto at = [](std::uint64_t v, int bit) { return v << bit; };
+        return at(blend, 0) | at(writeMask, 4) | at(samples, 8) | at(wireframe, 16) | at(discard, 17) |
+               at(texFunc[0], 18) | at(texFunc[1], 21) | at(texFormat[0], 24) | at(texFormat[1], 26) | at(fog, 28) |
+               at(flat, 29) | at(lighting, 30);
     }
 };
 
@@ -60,7 +66,7 @@ private:
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkShaderModule vert_ = VK_NULL_HANDLE, frag_ = VK_NULL_HANDLE;
     VkPipelineCache cache_ = VK_NULL_HANDLE;
-    std::unordered_map<std::uint32_t, VkPipeline> pipelines_;
+    std::unordered_map<std::uint64_t, VkPipeline> pipelines_;
 };
 
 }  // namespace m3g::vk

@@ -85,8 +85,12 @@ PipelineKey pipelineKey(const DrawUniforms& u, const CompositingMode* cm, std::u
     key.writeMask = writeMask(cm);
     key.samples = samples;
     key.discard = (u.misc[1] > 0.0f || u.texEnv[0][3] != 0 || u.texEnv[1][3] != 0) ? 1 : 0;
-    key.textures = static_cast<std::uint8_t>((u.texEnv[0][0] != TEX_OFF ? 1 : 0) | (u.texEnv[1][0] != TEX_OFF ? 2 : 0));
+    for (int unit = 0; unit < 2; ++unit) {
+        key.texFunc[unit] = static_cast<std::uint8_t>(u.texEnv[unit][0]);
+        key.texFormat[unit] = static_cast<std::uint8_t>((u.texEnv[unit][1] ? 1 : 0) | (u.texEnv[unit][2] ? 2 : 0));
+    }
     key.fog = u.fogParams[0] != 0.0f ? 1 : 0;
+    key.flat = (u.flags[0] & F_FLAT) ? 1 : 0;
     if (u.flags[0] & F_LIGHTING) key.lighting = (u.flags[0] & F_TWO_SIDED) ? 3 : 1;
     return key;
 }
@@ -241,7 +245,7 @@ void Renderer::begin(Graphics3D& g3d, bool coveredByClear) {
     chunk_ = 0;
     chunkOffset_ = 0;
     quadOffset_ = 0;
-    boundPipeline_ = ~0u;
+    boundPipeline_ = ~0ull;
     cull_ = frontFace_ = depthTest_ = depthWrite_ = biasEnabled_ = -1;
     boundTextures_ = VK_NULL_HANDLE;
 

@@ -115,7 +115,7 @@ private:
     Buffer dummy_;
 
     // State last set on cmd_, to skip redundant commands.
-    std::uint32_t boundPipeline_ = ~0u;
+    std::uint64_t boundPipeline_ = ~0ull;
     int cull_ = -1, frontFace_ = -1, depthTest_ = -1, depthWrite_ = -1;
     float biasFactor_ = 0.0f, biasUnits_ = 0.0f;
     int biasEnabled_ = -1;

@@ -17,37 +17,46 @@ layout(location = 6) in float inFogDepth;
 layout(location = 0) out vec4 outColor;
 
 // The features a draw uses (render-vk/Pipelines.h, PipelineKey): what a
-// draw does not use compiles away instead of running masked. MAY_DISCARD is
-// false for draws with no alpha threshold and no Background BORDER, so depth
-// can also be tested before shading.
+// draw does not use compiles away instead of running masked (llvmpipe runs
+// both sides of a uniform branch). MAY_DISCARD is false for draws with no
+// alpha threshold and no Background BORDER, so depth can also be tested
+// before shading. TEXn: the unit's function (0 = off, 1 REPLACE, 2 MODULATE,
+// 3 DECAL, 4 BLEND, 5 ADD); TEXn_FORMAT: bit 0 the image has colour
+// channels, bit 1 alpha.
 layout(constant_id = 0) const bool MAY_DISCARD = true;
-layout(constant_id = 1) const bool UNIT0 = true;
-layout(constant_id = 2) const bool UNIT1 = true;
+layout(constant_id = 1) const int TEX0 = 0;
+layout(constant_id = 2) const int TEX1 = 0;
 layout(constant_id = 3) const bool FOG = true;
+layout(constant_id = 4) const int TEX0_FORMAT = 3;
+layout(constant_id = 5) const int TEX1_FORMAT = 3;
+layout(constant_id = 6) const bool FLAT = false;
+layout(constant_id = 7) const bool TWO_SIDED = true;
 
-vec4 applyUnit(vec4 cf, int unit, vec4 tc) {
-    ivec4 env = u.texEnv[unit];
+vec4 applyUnit(vec4 cf, int unit, int func, int format, vec4 tc) {
     vec2 st = tc.xy / tc.w;
-    bool outsideS = (env.w & 1) != 0 && (st.x < 0.0 || st.x > 1.0);
-    bool outsideT = (env.w & 2) != 0 && (st.y < 0.0 || st.y > 1.0);
-    if (MAY_DISCARD && (outsideS || outsideT)) discard;
+    if (MAY_DISCARD) {
+        int border = u.texEnv[unit].w;
+        bool outsideS = (border & 1) != 0 && (st.x < 0.0 || st.x > 1.0);
+        bool outsideT = (border & 2) != 0 && (st.y < 0.0 || st.y > 1.0);
+        if (outsideS || outsideT) discard;
+    }
     vec4 t = texture(textures[unit], st);
-    bool hasColor = env.y != 0;
-    bool hasAlpha = env.z != 0;
+    bool hasColor = (format & 1) != 0;
+    bool hasAlpha = (format & 2) != 0;
     vec3 c = cf.rgb;
     float a = cf.a;
-    if (env.x == 1) {  // REPLACE
+    if (func == 1) {  // REPLACE
         if (hasColor) c = t.rgb;
         if (hasAlpha) a = t.a;
-    } else if (env.x == 2) {  // MODULATE (texels were expanded with 1 for missing channels)
+    } else if (func == 2) {  // MODULATE (texels were expanded with 1 for missing channels)
         c = cf.rgb * t.rgb;
         a = cf.a * t.a;
-    } else if (env.x == 3) {  // DECAL (RGB: C_t; RGBA: mix by A_t)
+    } else if (func == 3) {  // DECAL (RGB: C_t; RGBA: mix by A_t)
         c = hasAlpha ? mix(cf.rgb, t.rgb, t.a) : t.rgb;
-    } else if (env.x == 4) {  // BLEND
+    } else if (func == 4) {  // BLEND
         if (hasColor) c = mix(cf.rgb, u.texBlendColor[unit].rgb, t.rgb);
         a = cf.a * t.a;
-    } else if (env.x == 5) {  // ADD
+    } else if (func == 5) {  // ADD
         if (hasColor) c = clamp(cf.rgb + t.rgb, 0.0, 1.0);
         a = cf.a * t.a;
     }
@@ -55,10 +64,10 @@ vec4 applyUnit(vec4 cf, int unit, vec4 tc) {
 }
 
 void main() {
-    bool flatShade = (u.flags.x & F_FLAT) != 0;
-    vec4 color = gl_FrontFacing ? (flatShade ? inFlatFront : inFront) : (flatShade ? inFlatBack : inBack);
-    if (UNIT0 && u.texEnv[0].x != 0) color = applyUnit(color, 0, inTex0);
-    if (UNIT1 && u.texEnv[1].x != 0) color = applyUnit(color, 1, inTex1);
+    bool back = TWO_SIDED && !gl_FrontFacing;
+    vec4 color = FLAT ? (back ? inFlatBack : inFlatFront) : (back ? inBack : inFront);
+    if (TEX0 != 0) color = applyUnit(color, 0, TEX0, TEX0_FORMAT, inTex0);
+    if (TEX1 != 0) color = applyUnit(color, 1, TEX1, TEX1_FORMAT, inTex1);
 
     // Alpha test: pass if A >= threshold (off at 0).
     if (MAY_DISCARD && u.misc.y > 0.0 && color.a < u.misc.y) discard;
