@@ -4,6 +4,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #include <string>
 
 #include <glm/glm.hpp>
@@ -75,6 +79,34 @@ std::uint8_t writeMask(const CompositingMode* cm) {
         ((!cm || cm->isColorWriteEnabled()) ? (VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT)
                                             : 0) |
         ((!cm || cm->isAlphaWriteEnabled()) ? VK_COLOR_COMPONENT_A_BIT : 0));
+}
+
+/// `count` RGBA (or BGRA) texels to opaque 0xAARRGGBB words. Four texels
+/// per SSE2 step: at 1280x960 the byte-by-byte loop was a quarter of an
+/// empty headless frame's CPU time (GCC does not vectorise it at -O2).
+void toArgb(const std::uint8_t* src, std::uint32_t* out, std::size_t count, bool bgra) {
+    std::size_t i = 0;
+#if defined(__SSE2__)
+    const __m128i opaque = _mm_set1_epi32(static_cast<int>(0xFF000000u));
+    const __m128i green = _mm_set1_epi32(0x0000FF00);
+    const __m128i low = _mm_set1_epi32(0x000000FF);
+    for (; i + 4 <= count; i += 4) {
+        const __m128i t = _mm_loadu_si128(reinterpret_cast<const __m128i*>(src + i * 4));
+        __m128i argb;
+        if (bgra) {
+            argb = _mm_or_si128(t, opaque);
+        } else {  // R | G << 8 | B << 16 -> B | G << 8 | R << 16
+            const __m128i r = _mm_slli_epi32(_mm_and_si128(t, low), 16);
+            const __m128i b = _mm_and_si128(_mm_srli_epi32(t, 16), low);
+            argb = _mm_or_si128(_mm_or_si128(r, b), _mm_or_si128(_mm_and_si128(t, green), opaque));
+        }
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i), argb);
+    }
+#endif
+    const int red = bgra ? 2 : 0, blue = bgra ? 0 : 2;
+    for (; i < count; ++i)
+        out[i] = 0xFF000000u | (static_cast<std::uint32_t>(src[i * 4 + red]) << 16) |
+                 (static_cast<std::uint32_t>(src[i * 4 + 1]) << 8) | src[i * 4 + blue];
 }
 
 /// The pipeline of a draw with uniforms `u`: blending and write mask from
@@ -809,10 +841,7 @@ void Renderer::release(Graphics3D& g3d) {
         }
     } else if (Graphics* graphics = g3d.targetGraphics()) {
         auto px = graphics->pixels();
-        const int red = bgra ? 2 : 0, blue = bgra ? 0 : 2;
-        for (std::size_t i = 0; i < std::min(n, px.size()); ++i)
-            px[i] = 0xFF000000u | (static_cast<std::uint32_t>(src[i * 4 + red]) << 16) |
-                    (static_cast<std::uint32_t>(src[i * 4 + 1]) << 8) | src[i * 4 + blue];
+        toArgb(src, px.data(), std::min(n, px.size()), bgra);
     }
 }
 
