@@ -128,6 +128,14 @@ private:
     bool loop_;
 };
 
+/// A looping sequence's time mapped into [t_first, t_first + duration).
+double loopTime(const ValidKeys& keys, double duration, double time) {
+    double s = std::fmod(time, duration);
+    if (s < 0.0) s += duration;
+    if (s < keys.time(0)) s += duration;
+    return s;
+}
+
 /// The segment holding time s: the last of the n keys with time <= s, or
 /// with time < s when `strict` (the left-hand limit at a key).
 int segmentAt(const ValidKeys& keys, int n, double s, bool strict) {
@@ -214,10 +222,7 @@ SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<flo
     // Map the time onto the keyframes.
     double s = time;
     if (keys.loop()) {
-        const double d = k.duration;
-        s = std::fmod(s, d);
-        if (s < 0.0) s += d;
-        if (s < keys.time(0)) s += d;  // now in [t_first, t_first + D)
+        s = loopTime(keys, k.duration, time);
     } else {
         if (s < keys.time(0)) {
             copyKey(keys, 0, comps, out);
@@ -287,11 +292,8 @@ void sampleKeyframeSlope(const KeyframeView& k, double time, bool fromLeft, std:
 
     double s = time;
     if (keys.loop()) {
-        const double d = k.duration;
-        s = std::fmod(s, d);
-        if (s < 0.0) s += d;
-        if (s < keys.time(0)) s += d;  // now in [t_first, t_first + D)
-        if (fromLeft && s == keys.time(0)) s += d;  // the wrap segment ends here
+        s = loopTime(keys, k.duration, time);
+        if (fromLeft && s == keys.time(0)) s += k.duration;  // the wrap segment ends here
     } else {
         if (fromLeft ? s <= keys.time(0) : s < keys.time(0)) return;
         if (fromLeft ? s > keys.time(n - 1) : s >= keys.time(n - 1)) return;
