@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "ComputeDeformer.h"
+#include "ComputeRunner.h"
 #include "Context.h"
 #include "ImageIO.h"
 #include "MeshDeformer.h"
@@ -97,34 +98,9 @@ Agreement compare(const float* cpu, int cpuStride, const float* gpu, int gpuStri
         std::printf("  %-28s worst relative difference %.3g (limit %.0e)\n", (what), a_.worstRelative, kRelative); \
     } while (0)
 
-/// One ComputeDeformer on the shared device, driven by one-shot submits.
-struct GpuRunner {
-    vk::Context& ctx = vk::Context::get();
-    vk::ComputeDeformer deformer{ctx};
-    vk::GpuDeformState state;
-    vk::Buffer out;
-    std::uint64_t dispatchesBefore = 0;
-
-    ~GpuRunner() {
-        vkDeviceWaitIdle(ctx.device());
-        deformer.release(state);
-        deformer.endFrame();
-        ctx.destroy(out);
-    }
-    void ensureOutput(std::size_t floats) {
-        if (out.buffer && out.size >= floats * sizeof(float)) return;
-        ctx.destroy(out);
-        out = ctx.createHostBuffer(floats * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-    }
-    template <class Record>
-    void run(Record&& record) {
-        ctx.submitNow([&](VkCommandBuffer cmd) {
-            record(cmd);
-            vk::ComputeDeformer::barrier(cmd, VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
-        });
-        deformer.endFrame();
-    }
-    const float* floats() const { return static_cast<const float*>(out.mapped); }
+/// The compute path's harness (tests/bench/ComputeRunner.h) on the shared device.
+struct GpuRunner : m3gbench::ComputeRunner {
+    GpuRunner() : ComputeRunner(vk::Context::get()) {}
 };
 
 // ---- Random skinned meshes -------------------------------------------------
