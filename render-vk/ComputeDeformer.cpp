@@ -111,14 +111,8 @@ VkDescriptorSet ComputeDeformer::descriptorSet(const Buffer& frameData, const Bu
         poolUsed_ = 0;
     }
     if (pool_ == pools_.size()) {
-        VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kSetsPerPool * kBindings};
-        VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-        pi.maxSets = kSetsPerPool;
-        pi.poolSizeCount = 1;
-        pi.pPoolSizes = &size;
-        VkDescriptorPool pool;
-        check(vkCreateDescriptorPool(ctx_.device(), &pi, nullptr, &pool), "vkCreateDescriptorPool (compute)");
-        pools_.push_back(pool);
+        pools_.push_back(
+            createDescriptorPool(ctx_.device(), VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kSetsPerPool, kBindings, "compute"));
         poolUsed_ = 0;
     }
     VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};

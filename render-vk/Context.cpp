@@ -254,6 +254,19 @@ VkShaderModule createShaderModule(VkDevice device, const std::uint32_t* code, st
     return module;
 }
 
+VkDescriptorPool createDescriptorPool(VkDevice device, VkDescriptorType type, std::uint32_t sets,
+                                      std::uint32_t perSet, const char* what, VkDescriptorPoolCreateFlags flags) {
+    VkDescriptorPoolSize size{type, sets * perSet};
+    VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    pi.flags = flags;
+    pi.maxSets = sets;
+    pi.poolSizeCount = 1;
+    pi.pPoolSizes = &size;
+    VkDescriptorPool pool;
+    check(vkCreateDescriptorPool(device, &pi, nullptr, &pool), (std::string("vkCreateDescriptorPool (") + what + ")").c_str());
+    return pool;
+}
+
 bool Context::exists() noexcept { return gExists.load(); }
 
 Context& Context::get() { return *shared(); }

@@ -29,6 +29,11 @@ void copyBufferToImage(VkCommandBuffer cmd, VkBuffer buffer, VkImage image, std:
 /// A shader module from SPIR-V (`bytes` long, as embedded by glslangValidator).
 VkShaderModule createShaderModule(VkDevice device, const std::uint32_t* code, std::size_t bytes);
 
+/// A descriptor pool of `sets` sets holding `perSet` descriptors of one
+/// `type` each; `what` names it in the error.
+VkDescriptorPool createDescriptorPool(VkDevice device, VkDescriptorType type, std::uint32_t sets,
+                                      std::uint32_t perSet, const char* what, VkDescriptorPoolCreateFlags flags = 0);
+
 /// Throws VulkanError naming `what` when `result` is not VK_SUCCESS.
 void check(VkResult result, const char* what);
 const char* resultName(VkResult result);

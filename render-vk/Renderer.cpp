@@ -151,12 +151,7 @@ Renderer::Renderer() : ctx_(Context::shared()) {
     resources_ = std::make_unique<ResourceCache>(*ctx_, pipelines_->textureSetLayout());
     const auto align = static_cast<std::uint32_t>(ctx_->properties().limits.minUniformBufferOffsetAlignment);
     uniformStride_ = static_cast<std::uint32_t>((sizeof(DrawUniforms) + align - 1) / align * align);
-    VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1024};
-    VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    pi.maxSets = 1024;
-    pi.poolSizeCount = 1;
-    pi.pPoolSizes = &size;
-    check(vkCreateDescriptorPool(ctx_->device(), &pi, nullptr, &uniformPool_), "vkCreateDescriptorPool");
+    uniformPool_ = createDescriptorPool(ctx_->device(), VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1024, 1, "uniforms");
     quads_ = ctx_->createHostBuffer(kQuadBytes * 1024, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
     dummy_ = ctx_->createHostBuffer(64, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
     std::memset(dummy_.mapped, 0, 64);

@@ -391,14 +391,8 @@ VkDescriptorSet ResourceCache::textureSet(const TextureMirror* t0, VkSampler s0,
     auto it = sets_.find(key);
     if (it != sets_.end()) return it->second;
     if (pools_.empty() || poolUsed_ == kSetsPerPool) {
-        VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kSetsPerPool * 2};
-        VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-        pi.maxSets = kSetsPerPool;
-        pi.poolSizeCount = 1;
-        pi.pPoolSizes = &size;
-        VkDescriptorPool pool;
-        check(vkCreateDescriptorPool(ctx_.device(), &pi, nullptr, &pool), "vkCreateDescriptorPool");
-        pools_.push_back(pool);
+        pools_.push_back(createDescriptorPool(ctx_.device(), VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kSetsPerPool, 2,
+                                              "textures"));
         poolUsed_ = 0;
     }
     VkDescriptorSetLayout layout = setLayout_;

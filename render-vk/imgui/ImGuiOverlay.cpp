@@ -65,13 +65,8 @@ ImGuiOverlay::Impl::Impl() {
     pli.pushConstantRangeCount = 1;
     pli.pPushConstantRanges = &push;
     check(vkCreatePipelineLayout(device, &pli, nullptr, &layout), "vkCreatePipelineLayout (UI)");
-    VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 256};
-    VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    pi.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
-    pi.maxSets = 256;
-    pi.poolSizeCount = 1;
-    pi.pPoolSizes = &size;
-    check(vkCreateDescriptorPool(device, &pi, nullptr, &pool), "vkCreateDescriptorPool (UI)");
+    pool = createDescriptorPool(device, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 256, 1, "UI",
+                                VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT);
     VkSamplerCreateInfo si{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     si.magFilter = si.minFilter = VK_FILTER_LINEAR;
     si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
