@@ -72,8 +72,8 @@ void main() {
     // Alpha test: pass if A >= threshold (off at 0).
     if (MAY_DISCARD && u.misc.y > 0.0 && color.a < u.misc.y) discard;
 
-    int fogMode = int(u.fogParams.x);
-    if (FOG && fogMode != 0) {
+    if (FOG) {  // PipelineKey::fog: fogParams.x != 0
+        int fogMode = int(u.fogParams.x);
         float z = inFogDepth;
         float f = fogMode == 1 ? (u.fogParams.z - z) / (u.fogParams.z - u.fogParams.y) : exp(-u.fogParams.w * z);
         f = clamp(f, 0.0, 1.0);

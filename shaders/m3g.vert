@@ -88,7 +88,7 @@ void main() {
     vec4 vertexColor = has(F_HAS_COLORS) ? inColor : u.defaultColor;
 
     vec4 front, back;
-    if (LIGHTING && has(F_LIGHTING)) {
+    if (LIGHTING) {  // PipelineKey::lighting comes from F_LIGHTING / F_TWO_SIDED
         vec3 eyePos = eye.xyz / eye.w;
         vec3 n = has(F_HAS_NORMALS) ? inNormal : vec3(0.0, 0.0, 1.0);
         n = mat3(u.normalMatrix) * n;
@@ -98,7 +98,7 @@ void main() {
         vec4 ambient = track ? vertexColor : u.matAmbient;
         vec4 diffuse = track ? vertexColor : u.matDiffuse;
         front = lightVertex(eyePos, n, ambient, diffuse);
-        back = TWO_SIDED && has(F_TWO_SIDED) ? lightVertex(eyePos, -n, ambient, diffuse) : front;
+        back = TWO_SIDED ? lightVertex(eyePos, -n, ambient, diffuse) : front;
     } else {
         front = back = clamp(vertexColor, 0.0, 1.0);
     }
