@@ -494,15 +494,23 @@ struct SkinScene {
         morphing->setWeights(w);
     }
 
-    Ref<Image2D> render(int mode) {
+    /// A 96x96 target bound with skinning `mode`, no lights, the camera
+    /// `distance` in front of the origin.
+    Ref<Image2D> bind(int mode, float distance) {
         Ref<Image2D> target = makeTarget(96, 96);
         Graphics3D* g = Graphics3D::getInstance();
         g->setSkinningMode(mode);
         g->bindTarget(target.get());
         g->resetLights();
         Transform eye;
-        eye.postTranslate(0, 0, 3);
+        eye.postTranslate(0, 0, distance);
         g->setCamera(camera, &eye);
+        return target;
+    }
+
+    Ref<Image2D> render(int mode) {
+        Ref<Image2D> target = bind(mode, 3);
+        Graphics3D* g = Graphics3D::getInstance();
         Transform lightDir;
         lightDir.postRotate(-30, 1, 1, 0);
         g->addLight(light, &lightDir);
@@ -579,14 +587,8 @@ TEST_F(ComputeSkinningTest, SameMeshTwiceInOneFrame) {
     Ref<Image2D> images[2];
     for (int mode : {Graphics3D::SKINNING_CPU, Graphics3D::SKINNING_COMPUTE}) {
         SkinScene scene;  // one per path: no mirror shared between them
-        Ref<Image2D> target = makeTarget(96, 96);
+        Ref<Image2D> target = scene.bind(mode, 4);
         Graphics3D* g = Graphics3D::getInstance();
-        g->setSkinningMode(mode);
-        g->bindTarget(target.get());
-        g->resetLights();
-        Transform eye;
-        eye.postTranslate(0, 0, 4);
-        g->setCamera(scene.camera, &eye);
         scene.pose(10.0f);
         Transform left;
         left.postTranslate(-0.9f, 0, 0);
