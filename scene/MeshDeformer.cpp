@@ -171,7 +171,7 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
     const bool tableChanged = inputsChanged || table.revision() != tableRevision_;
     if (tableChanged) {
         valid_ = false;
-        partition_.build(table.bones(), table.maxInfluences(), n);
+        partition_.build(table.bones(), table.weights(), table.maxInfluences(), n);
         tableRevision_ = table.revision();
         ++inputStamp_;
     }
@@ -220,7 +220,8 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         const auto group = partition_.group(c);
         if (group.empty()) continue;
         skin::SkinningJob job;
-        job.vertices = group;
+        job.vertices = partition_.loose(c);
+        job.runs = partition_.runs(c);
         job.vertexCount = n;
         job.influenceCount = c;
         job.influenceStride = table.maxInfluences();

@@ -25,6 +25,11 @@ void morphScalar(const MorphJob& job, std::size_t begin, std::size_t end) noexce
 #define M3G_SKIN_X86 1
 void skinSse2(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept;
 void skinAvx2(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept;
+/// Positions [begin, end) of an already validated job's run sequence, each
+/// run's entries blended once (from its first vertex's slots) and applied
+/// eight lanes at a time. False (nothing done) for the cases it does not
+/// cover: no normals, or no influence.
+bool skinRunsAvx2(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept;
 void morphSse2(const MorphJob& job, std::size_t begin, std::size_t end) noexcept;
 void morphAvx2(const MorphJob& job, std::size_t begin, std::size_t end) noexcept;
 /// Renormalises `triples` xyz triples in place, 4 (8) lanes at a time; every
@@ -37,6 +42,22 @@ void paletteAvx2(const PaletteJob& job) noexcept;
 std::uint32_t maxIndexAvx2(const std::uint32_t* indices, std::size_t count) noexcept;
 void normalizeAvx2(float* xyz, std::size_t triples) noexcept;
 #endif
+
+/// The run holding position `position` of a validated run sequence (which
+/// has one: position < the runs' total count). Empty runs share the next
+/// run's start and come before it, so the last run starting at or before
+/// `position` is the one.
+inline const InfluenceRun* findRun(std::span<const InfluenceRun> runs, std::size_t position) noexcept {
+    std::size_t lo = 0, hi = runs.size();  // first run with start > position, in [lo, hi]
+    while (lo < hi) {
+        const std::size_t mid = lo + (hi - lo) / 2;
+        if (runs[mid].start <= position)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return runs.data() + (lo - 1);
+}
 
 /// x / |x| for an xyz triple in place (each component divided by the
 /// length); a zero-length (or NaN) triple is left as it is. Shared by the scalar paths and the tails.

@@ -1,6 +1,8 @@
 #include <m3g/skin/Skinning.h>
 
 #include <algorithm>
+#include <cstring>
+#include <iterator>
 
 #include <m3g/skin/ThreadPool.h>
 
@@ -28,28 +30,43 @@ void runRange(const SkinningJob& job, Isa isa, std::size_t begin, std::size_t en
 
 }  // namespace
 
-bool SkinningJob::validate() const noexcept {
-    if (influenceCount < 0 || influenceStride < influenceCount) return false;
-    if (!isaSupported(isa)) return false;
-    if (!holds(inPositions, vertexCount, inPositionStride)) return false;
-    if (!holds(std::span<const float>(outPositions), vertexCount, outPositionStride)) return false;
-    if (inNormals.empty() != outNormals.empty()) return false;
-    if (!inNormals.empty() && (!holds(inNormals, vertexCount, inNormalStride) ||
-                               !holds(std::span<const float>(outNormals), vertexCount, outNormalStride)))
+namespace {
+
+/// validate()'s checks; `runVertices` receives the runs' vertex count.
+bool check(const SkinningJob& j, std::size_t* runVertices) noexcept {
+    *runVertices = 0;
+    if (j.influenceCount < 0 || j.influenceStride < j.influenceCount) return false;
+    if (!isaSupported(j.isa)) return false;
+    if (!holds(j.inPositions, j.vertexCount, j.inPositionStride)) return false;
+    if (!holds(std::span<const float>(j.outPositions), j.vertexCount, j.outPositionStride)) return false;
+    if (j.inNormals.empty() != j.outNormals.empty()) return false;
+    if (!j.inNormals.empty() && (!holds(j.inNormals, j.vertexCount, j.inNormalStride) ||
+                                 !holds(std::span<const float>(j.outNormals), j.vertexCount, j.outNormalStride)))
         return false;
-    if (vertices.empty()) return true;
-    // Every listed vertex must be below `limit`: the vertex count, and the
-    // number of vertices the influence arrays reach. One pass, branch-free.
-    std::size_t limit = vertexCount;
-    if (influenceCount > 0) {
-        const auto stride = static_cast<std::size_t>(influenceStride);
-        const auto count = static_cast<std::size_t>(influenceCount);
-        const std::size_t size = std::min(boneIndices.size(), boneWeights.size());
+    // Every vertex must be below `limit`: the vertex count, and the number
+    // of vertices the influence arrays reach.
+    std::size_t limit = j.vertexCount;
+    if (j.influenceCount > 0) {
+        const auto stride = static_cast<std::size_t>(j.influenceStride);
+        const auto count = static_cast<std::size_t>(j.influenceCount);
+        const std::size_t size = std::min(j.boneIndices.size(), j.boneWeights.size());
         limit = size < count ? 0 : std::min(limit, (size - count) / stride + 1);
     }
     const std::uint64_t bound = limit;
-    const std::uint32_t* v = vertices.data();
-    const std::size_t n = vertices.size();
+    // Runs: inside the arrays, `start` the running sum (O(runs), no
+    // per-vertex reading).
+    std::uint64_t total = 0;
+    for (const InfluenceRun& r : j.runs) {
+        if (r.start != total) return false;
+        if (static_cast<std::uint64_t>(r.firstVertex) + r.vertexCount > bound) return false;
+        total += r.vertexCount;
+    }
+    if (total > 0xFFFFFFFFu) return false;
+    *runVertices = static_cast<std::size_t>(total);
+    if (j.vertices.empty()) return true;
+    // The list: one pass, branch-free.
+    const std::uint32_t* v = j.vertices.data();
+    const std::size_t n = j.vertices.size();
 #ifdef M3G_SKIN_X86
     if (n >= 64 && isaSupported(Isa::Avx2)) return detail::maxIndexAvx2(v, n) < bound;
 #endif
@@ -65,35 +82,82 @@ bool SkinningJob::validate() const noexcept {
     return !(bad0 | bad1 | bad2 | bad3);
 }
 
+/// Positions [begin, end) of the job's run sequence.
+void runRuns(const SkinningJob& job, Isa isa, std::size_t begin, std::size_t end) noexcept {
+#ifdef M3G_SKIN_X86
+    if (isa == Isa::Avx2 && detail::skinRunsAvx2(job, begin, end)) return;
+#endif
+    // Other paths: each run as a vertex list, a stack buffer at a time (each
+    // vertex of a valid run has the run's slots, which these paths read).
+    std::uint32_t list[256];
+    SkinningJob sub = job;
+    sub.runs = {};
+    const InfluenceRun* r = detail::findRun(job.runs, begin);
+    while (begin < end) {
+        const std::size_t offset = begin - r->start;
+        const std::size_t left = r->vertexCount - offset;
+        const std::size_t n = std::min({left, end - begin, std::size(list)});
+        for (std::size_t i = 0; i < n; ++i) list[i] = static_cast<std::uint32_t>(r->firstVertex + offset + i);
+        sub.vertices = std::span<const std::uint32_t>(list, n);
+        runRange(sub, isa, 0, n);
+        begin += n;
+        if (n == left) ++r;
+    }
+}
+
+}  // namespace
+
+bool SkinningJob::validate() const noexcept {
+    std::size_t runVertices;
+    return check(*this, &runVertices);
+}
+
 bool SkinningJob::run() const noexcept {
-    if (!validate()) return false;
-    runRange(*this, resolveIsa(isa), 0, vertices.size());
+    std::size_t runVertices;
+    if (!check(*this, &runVertices)) return false;
+    const Isa resolved = resolveIsa(isa);
+    if (!vertices.empty()) runRange(*this, resolved, 0, vertices.size());
+    if (runVertices > 0) runRuns(*this, resolved, 0, runVertices);
     return true;
 }
 
 bool SkinningJob::runParallel(ThreadPool& pool, std::size_t grain) const noexcept {
-    if (!validate()) return false;
+    std::size_t runVertices;
+    if (!check(*this, &runVertices)) return false;
     if (grain == 0) grain = 1;
     struct Context {
         const SkinningJob* job;
         Isa isa;
         std::size_t grain;
-        std::size_t total;
-    } context{this, resolveIsa(isa), grain, vertices.size()};
-    const std::size_t chunks = (vertices.size() + grain - 1) / grain;
+        std::size_t listChunks;
+        std::size_t listTotal;
+        std::size_t runTotal;
+    } context{this, resolveIsa(isa), grain, (vertices.size() + grain - 1) / grain, vertices.size(), runVertices};
+    // List chunks first, then run chunks: a chunk never mixes the two.
+    const std::size_t chunks = context.listChunks + (runVertices + grain - 1) / grain;
     pool.run(
         chunks,
         [](void* c, std::size_t chunk) {
             const auto& ctx = *static_cast<const Context*>(c);
-            const std::size_t begin = chunk * ctx.grain;
-            const std::size_t end = begin + ctx.grain < ctx.total ? begin + ctx.grain : ctx.total;
-            runRange(*ctx.job, ctx.isa, begin, end);
+            const bool list = chunk < ctx.listChunks;
+            const std::size_t total = list ? ctx.listTotal : ctx.runTotal;
+            const std::size_t begin = (list ? chunk : chunk - ctx.listChunks) * ctx.grain;
+            const std::size_t end = begin + ctx.grain < total ? begin + ctx.grain : total;
+            if (list)
+                runRange(*ctx.job, ctx.isa, begin, end);
+            else
+                runRuns(*ctx.job, ctx.isa, begin, end);
         },
         &context);
     return true;
 }
 
 void InfluencePartition::build(std::span<const std::int32_t> boneIndices, int stride, std::size_t vertexCount) {
+    build(boneIndices, {}, stride, vertexCount);
+}
+
+void InfluencePartition::build(std::span<const std::int32_t> boneIndices, std::span<const float> boneWeights,
+                               int stride, std::size_t vertexCount) {
     const int n = stride < 0 ? 0 : stride;
     const auto ns = static_cast<std::size_t>(n);
     const std::size_t tableVertices = ns == 0 ? 0 : boneIndices.size() / ns;
@@ -112,12 +176,55 @@ void InfluencePartition::build(std::span<const std::int32_t> boneIndices, int st
     cursor.assign(offsets_.begin(), offsets_.end() - 1);
     for (std::size_t v = 0; v < vertexCount; ++v)
         vertices_[cursor[static_cast<std::size_t>(countOf(v))]++] = static_cast<std::uint32_t>(v);
+
+    // Runs: consecutive vertices of a group whose used slots (bones and
+    // weight bit patterns) equal those of the run's first vertex.
+    const bool weights = boneWeights.size() >= tableVertices * ns && tableVertices > 0;
+    loose_.clear();
+    runs_.clear();
+    looseOffsets_.assign(offsets_.size(), 0);
+    runOffsets_.assign(offsets_.size(), 0);
+    for (std::size_t c = 0; c + 1 < offsets_.size(); ++c) {
+        const std::uint32_t* g = vertices_.data() + offsets_[c];
+        const std::size_t size = offsets_[c + 1] - offsets_[c];
+        std::uint32_t start = 0;
+        auto same = [&](std::size_t a, std::size_t b) {
+            return std::memcmp(&boneIndices[a * ns], &boneIndices[b * ns], c * sizeof(std::int32_t)) == 0 &&
+                   std::memcmp(&boneWeights[a * ns], &boneWeights[b * ns], c * sizeof(float)) == 0;
+        };
+        for (std::size_t i = 0; i < size;) {
+            std::size_t e = i + 1;
+            if (weights && c > 0)
+                while (e < size && g[e] == g[e - 1] + 1 && same(g[i], g[e])) ++e;
+            if (e - i >= kMinRun) {
+                runs_.push_back({g[i], static_cast<std::uint32_t>(e - i), start});
+                start += static_cast<std::uint32_t>(e - i);
+            } else {
+                loose_.insert(loose_.end(), g + i, g + e);
+            }
+            i = e;
+        }
+        looseOffsets_[c + 1] = loose_.size();
+        runOffsets_[c + 1] = runs_.size();
+    }
 }
 
 std::span<const std::uint32_t> InfluencePartition::group(int count) const noexcept {
     if (count < 0 || static_cast<std::size_t>(count) + 1 >= offsets_.size()) return {};
     const auto c = static_cast<std::size_t>(count);
     return std::span<const std::uint32_t>(vertices_).subspan(offsets_[c], offsets_[c + 1] - offsets_[c]);
+}
+
+std::span<const std::uint32_t> InfluencePartition::loose(int count) const noexcept {
+    if (count < 0 || static_cast<std::size_t>(count) + 1 >= looseOffsets_.size()) return {};
+    const auto c = static_cast<std::size_t>(count);
+    return std::span<const std::uint32_t>(loose_).subspan(looseOffsets_[c], looseOffsets_[c + 1] - looseOffsets_[c]);
+}
+
+std::span<const InfluenceRun> InfluencePartition::runs(int count) const noexcept {
+    if (count < 0 || static_cast<std::size_t>(count) + 1 >= runOffsets_.size()) return {};
+    const auto c = static_cast<std::size_t>(count);
+    return std::span<const InfluenceRun>(runs_).subspan(runOffsets_[c], runOffsets_[c + 1] - runOffsets_[c]);
 }
 
 // ---------------------------------------------------------------------------

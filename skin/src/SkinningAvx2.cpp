@@ -387,41 +387,113 @@ M3G_AVX2_INLINE void loadSoa3(const float* p, __m256& x, __m256& y, __m256& z) n
     z = _mm256_shuffle_ps(yz, m25, _MM_SHUFFLE(3, 0, 3, 1));
 }
 
-/// Row m[0..3] of a blended matrix applied to lanes a, b, c (+ m[3] * w).
-template <bool Translate>
-M3G_AVX2_INLINE __m256 rowTimes(const float* m, __m256 a, __m256 b, __m256 c) noexcept {
-    const __m256 first = Translate ? _mm256_fmadd_ps(_mm256_broadcast_ss(m), a, _mm256_broadcast_ss(m + 3))
-                                   : _mm256_mul_ps(_mm256_broadcast_ss(m), a);
-    return _mm256_fmadd_ps(_mm256_broadcast_ss(m + 2), c, _mm256_fmadd_ps(_mm256_broadcast_ss(m + 1), b, first));
+/// The blended rows of a shared set of influences (blendRows' 24 floats:
+/// P0 P1 P2 N0 N1 N2, four each) as eight-lane coefficients. Two sources:
+/// - UniformRows: every coefficient broadcast once per run, so that the
+///   block loop's FMAs take them as memory operands (pays for itself from
+///   three blocks on);
+/// - RowBroadcasts: a broadcast load per use from the 24 floats (no set-up:
+///   short runs). Written as inline assembly with a memory operand: from
+///   the intrinsic, GCC hoisted the 24 addresses out of the loop and
+///   spilled them to the stack.
+struct UniformRows {
+    __m256 m[24];
+    M3G_AVX2_INLINE __m256 operator[](int i) const noexcept { return m[i]; }
+};
+
+struct RowBroadcasts {
+    const float* m;
+    M3G_AVX2_INLINE __m256 operator[](int i) const noexcept {
+        __m256 r;
+        asm("vbroadcastss %1, %0" : "=x"(r) : "m"(m[i]));
+        return r;
+    }
+};
+
+M3G_AVX2_INLINE void broadcastRows(const float* rows, UniformRows& u) noexcept {
+#pragma GCC unroll 24
+    for (int i = 0; i < 24; ++i) u.m[i] = _mm256_broadcast_ss(rows + i);
 }
 
-/// Eight consecutive vertices sharing one set of influences (the common
-/// case: SkinnedMesh::addTransform gives runs of vertices the same bones and
-/// weights): the rows are blended once and applied to eight lanes with
-/// FMAs (the result may differ from skinBlock's in the last bit; a vertex's
-/// block, not the chunking, decides which runs).
-/// `m`: the blended rows (blendRows) of the shared slots, 24 floats.
-M3G_AVX2_INLINE Block skinUniform(const BlockContext& c, const float* m, const float* p, const float* n) noexcept {
-    __m256 px, py, pz, nx, ny, nz;
-    loadSoa3(p, px, py, pz);
-    loadSoa3(n, nx, ny, nz);
+/// Row `r` (coefficients 4r .. 4r+3) applied to lanes a, b, c (+ the
+/// fourth coefficient).
+template <bool Translate, class Rows>
+M3G_AVX2_INLINE __m256 rowTimes(const Rows& m, int r, __m256 a, __m256 b, __m256 c) noexcept {
+    const __m256 first = Translate ? _mm256_fmadd_ps(m[4 * r], a, m[4 * r + 3]) : _mm256_mul_ps(m[4 * r], a);
+    return _mm256_fmadd_ps(m[4 * r + 2], c, _mm256_fmadd_ps(m[4 * r + 1], b, first));
+}
+
+/// Eight vertices sharing one set of influences (the common case:
+/// SkinnedMesh::addTransform gives runs of vertices the same bones and
+/// weights), inputs as eight lanes of x, y, z: the rows, blended once, are
+/// applied with FMAs (the result may differ from skinBlock's in the last
+/// bit; a vertex's block or run, not the chunking, decides which runs).
+template <class Rows>
+M3G_AVX2_INLINE Block skinUniform(const BlockContext& c, const Rows& m, __m256 px, __m256 py, __m256 pz, __m256 nx,
+                                  __m256 ny, __m256 nz) noexcept {
     const float s = c.scale[0];
     const __m256 scale = _mm256_set1_ps(s);
     px = _mm256_fmadd_ps(px, scale, _mm256_set1_ps(c.bias[0]));
     py = _mm256_fmadd_ps(py, scale, _mm256_set1_ps(c.bias[1]));
     pz = _mm256_fmadd_ps(pz, scale, _mm256_set1_ps(c.bias[2]));
     Block o;
-    o.x = rowTimes<true>(m, px, py, pz);
-    o.y = rowTimes<true>(m + 4, px, py, pz);
-    o.z = rowTimes<true>(m + 8, px, py, pz);
-    const __m256 bx = rowTimes<false>(m + 12, nx, ny, nz);
-    const __m256 by = rowTimes<false>(m + 16, nx, ny, nz);
-    const __m256 bz = rowTimes<false>(m + 20, nx, ny, nz);
+    o.x = rowTimes<true>(m, 0, px, py, pz);
+    o.y = rowTimes<true>(m, 1, px, py, pz);
+    o.z = rowTimes<true>(m, 2, px, py, pz);
+    const __m256 bx = rowTimes<false>(m, 3, nx, ny, nz);
+    const __m256 by = rowTimes<false>(m, 4, nx, ny, nz);
+    const __m256 bz = rowTimes<false>(m, 5, nx, ny, nz);
     const __m256 inv = inverseLength(bx, by, bz);
     o.nx = _mm256_mul_ps(bx, inv);
     o.ny = _mm256_mul_ps(by, inv);
     o.nz = _mm256_mul_ps(bz, inv);
     return o;
+}
+
+/// The same from eight consecutive packed xyz triples at p and n.
+template <class Rows>
+M3G_AVX2_INLINE Block skinUniform(const BlockContext& c, const Rows& m, const float* p, const float* n) noexcept {
+    __m256 px, py, pz, nx, ny, nz;
+    loadSoa3(p, px, py, pz);
+    loadSoa3(n, nx, ny, nz);
+    return skinUniform(c, m, px, py, pz, nx, ny, nz);
+}
+
+/// xyz of vertices first .. first+lanes-1 (lanes 1..8; the last repeated in
+/// the lanes beyond) at `stride` floats as eight lanes of x, y, z. Vertices
+/// below `safe` are read four floats at a time.
+M3G_AVX2_INLINE void gatherSoa3(const float* base, std::size_t stride, std::size_t safe, std::size_t first,
+                                std::size_t lanes, __m256& x, __m256& y, __m256& z) noexcept {
+    __m128 q[8];
+#pragma GCC unroll 8
+    for (std::size_t l = 0; l < 8; ++l) {
+        const std::size_t v = first + (l < lanes ? l : lanes - 1);
+        const float* p = base + v * stride;
+        q[l] = v < safe ? _mm_loadu_ps(p) : loadXyz0(p);
+    }
+    const __m256 a0 = pair(q[0], q[4]), a1 = pair(q[1], q[5]), a2 = pair(q[2], q[6]), a3 = pair(q[3], q[7]);
+    const __m256 t0 = _mm256_unpacklo_ps(a0, a1), t1 = _mm256_unpackhi_ps(a0, a1);
+    const __m256 t2 = _mm256_unpacklo_ps(a2, a3), t3 = _mm256_unpackhi_ps(a2, a3);
+    x = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
+    y = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
+    z = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
+}
+
+/// Lanes 0 .. lanes-1 of x, y, z to the xyz triples of vertices first ..
+/// first+lanes-1 at `stride` floats (three floats written per vertex).
+M3G_AVX2_INLINE void scatterSoa3(float* base, std::size_t stride, std::size_t first, std::size_t lanes, __m256 x,
+                                 __m256 y, __m256 z) noexcept {
+    const __m256 zero = _mm256_setzero_ps();
+    const __m256 t0 = _mm256_unpacklo_ps(x, y), t1 = _mm256_unpackhi_ps(x, y);
+    const __m256 t2 = _mm256_unpacklo_ps(z, zero), t3 = _mm256_unpackhi_ps(z, zero);
+    const __m256 q[4] = {_mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0)),
+                         _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2)),
+                         _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0)),
+                         _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2))};
+    for (std::size_t l = 0; l < lanes; ++l) {
+        const __m128 v = l < 4 ? _mm256_castps256_ps128(q[l]) : _mm256_extractf128_ps(q[l - 4], 1);
+        storeXyz(base + (first + l) * stride, v);
+    }
 }
 
 /// True if the eight vertices from `bi`/`bw` (stride 4) all have the slots
@@ -440,8 +512,8 @@ M3G_AVX2_INLINE bool sameInfluences(const std::int32_t* bi, const float* bw, con
     return _mm256_movemask_epi8(eq) == -1;
 }
 
-template <int K>
-M3G_AVX2 void skinBlocks(const SkinningJob& j, std::size_t begin, std::size_t end) noexcept {
+/// The block kernels' view of a job.
+M3G_AVX2_INLINE BlockContext blockContext(const SkinningJob& j) noexcept {
     BlockContext c;
     c.vertices = j.vertices.data();
     c.inP = j.inPositions.data();
@@ -460,6 +532,12 @@ M3G_AVX2 void skinBlocks(const SkinningJob& j, std::size_t begin, std::size_t en
     c.scale = _mm256_setr_ps(s, s, s, 0.0f, s, s, s, 0.0f);
     c.bias = _mm256_setr_ps(j.positionBias[0], j.positionBias[1], j.positionBias[2], 1.0f, j.positionBias[0],
                             j.positionBias[1], j.positionBias[2], 1.0f);
+    return c;
+}
+
+template <int K>
+M3G_AVX2 void skinBlocks(const SkinningJob& j, std::size_t begin, std::size_t end) noexcept {
+    const BlockContext c = blockContext(j);
     float* outP = j.outPositions.data();
     float* outN = j.outNormals.data();
     const std::size_t outPs = j.outPositionStride, outNs = j.outNormalStride;
@@ -476,6 +554,7 @@ M3G_AVX2 void skinBlocks(const SkinningJob& j, std::size_t begin, std::size_t en
         stride == 0 ? 0 : (j.boneIndices.size() < j.boneWeights.size() ? j.boneIndices.size() : j.boneWeights.size()) / stride;
     // The blended rows of the last shared-slot block and where its slots are.
     alignas(32) float rows[24];
+    UniformRows uniform{};  // set before use (`shared`); zeroed for the compiler's analysis
     bool shared = false;
     const std::int32_t* sharedB = nullptr;
     const float* sharedW = nullptr;
@@ -509,18 +588,19 @@ M3G_AVX2 void skinBlocks(const SkinningJob& j, std::size_t begin, std::size_t en
             const bool fullSlots = stride == 4 && v0 + 8 <= tableVertices;
             if (fullSlots && shared && sameInfluences(b0, w0, sharedB, sharedW)) {
                 bad = sharedBad;
-                o = skinUniform(c, rows, p0, n0);
+                o = skinUniform(c, uniform, p0, n0);
             } else if (fullSlots && sameInfluences(b0, w0, b0, w0)) {
                 __m256 y0, y1, y2;
                 blendRows<K>(c, b0, w0, y0, y1, y2, bad);
                 _mm256_store_ps(rows, y0);
                 _mm256_store_ps(rows + 8, y1);
                 _mm256_store_ps(rows + 16, y2);
+                broadcastRows(rows, uniform);
                 shared = true;
                 sharedB = b0;
                 sharedW = w0;
                 sharedBad = bad;
-                o = skinUniform(c, rows, p0, n0);
+                o = skinUniform(c, uniform, p0, n0);
             } else {
                 o = skinBlock<K, true>(
                     c,
@@ -577,6 +657,80 @@ M3G_AVX2 void skinBlocks(const SkinningJob& j, std::size_t begin, std::size_t en
     }
 }
 
+/// Vertices [v, v + count) of the run whose first vertex is `runFirst`:
+/// the rows blended once from the run's first vertex, then every eight
+/// vertices by skinUniform (inputs loaded straight from packed arrays, or
+/// gathered lane by lane at other strides and for the last block, which
+/// repeats its last vertex).
+template <class Rows>
+M3G_AVX2_INLINE void skinRunRows(const SkinningJob& j, const BlockContext& c, bool packed, const Rows& rows,
+                                 std::size_t v, std::size_t count) noexcept {
+    const std::size_t end = v + count;
+    float* outP = j.outPositions.data();
+    float* outN = j.outNormals.data();
+    if (packed) {
+        // loadSoa3 reads exactly the eight vertices' 24 floats.
+        const std::size_t direct = end < j.vertexCount ? end : j.vertexCount;
+        for (; v + 8 <= direct; v += 8) {
+            const Block o = skinUniform(c, rows, c.inP + v * 3, c.inN + v * 3);
+            storeSoa3(outP + v * 3, o.x, o.y, o.z);
+            storeSoa3(outN + v * 3, o.nx, o.ny, o.nz);
+        }
+    }
+    while (v < end) {
+        const std::size_t lanes = end - v < 8 ? end - v : 8;
+        __m256 px, py, pz, nx, ny, nz;
+        gatherSoa3(c.inP, c.inPs, c.safeP, v, lanes, px, py, pz);
+        gatherSoa3(c.inN, c.inNs, c.safeN, v, lanes, nx, ny, nz);
+        const Block o = skinUniform(c, rows, px, py, pz, nx, ny, nz);
+        scatterSoa3(outP, j.outPositionStride, v, lanes, o.x, o.y, o.z);
+        scatterSoa3(outN, j.outNormalStride, v, lanes, o.nx, o.ny, o.nz);
+        v += lanes;
+    }
+}
+
+template <int K>
+M3G_AVX2_INLINE void skinRun(const SkinningJob& j, const BlockContext& c, bool packed, std::size_t runFirst,
+                             std::size_t v, std::size_t count) noexcept {
+    const std::int32_t* bi = c.boneIndices + runFirst * c.stride;
+    const float* bw = c.boneWeights + runFirst * c.stride;
+    unsigned bad = 0;
+    __m256 y0, y1, y2;
+    blendRows<K>(c, bi, bw, y0, y1, y2, bad);
+    if (bad) {
+        // A slot outside the palette: the checked formula, vertex by vertex.
+        for (std::size_t i = 0; i < count; ++i) skinVertexChecked(j, v + i);
+        return;
+    }
+    alignas(32) float rows[24];
+    _mm256_store_ps(rows, y0);
+    _mm256_store_ps(rows + 8, y1);
+    _mm256_store_ps(rows + 16, y2);
+    if (count >= 24) {
+        UniformRows uniform;
+        broadcastRows(rows, uniform);
+        skinRunRows(j, c, packed, uniform, v, count);
+    } else {
+        skinRunRows(j, c, packed, RowBroadcasts{rows}, v, count);
+    }
+}
+
+/// Positions [begin, end) of the job's run sequence.
+template <int K>
+M3G_AVX2 void skinRuns(const SkinningJob& j, std::size_t begin, std::size_t end) noexcept {
+    const BlockContext c = blockContext(j);
+    const bool packed = c.inPs == 3 && c.inNs == 3 && j.outPositionStride == 3 && j.outNormalStride == 3;
+    const InfluenceRun* r = findRun(j.runs, begin);
+    while (begin < end) {
+        const std::size_t offset = begin - r->start;
+        const std::size_t left = r->vertexCount - offset;
+        const std::size_t n = left < end - begin ? left : end - begin;
+        if (n > 0) skinRun<K>(j, c, packed, r->firstVertex, r->firstVertex + offset, n);
+        begin += n;
+        ++r;
+    }
+}
+
 template <bool Normals>
 M3G_AVX2 void skinN(const SkinningJob& j, std::size_t begin, std::size_t end) noexcept {
     if constexpr (Normals) {
@@ -614,6 +768,18 @@ M3G_AVX2 std::uint32_t maxIndexAvx2(const std::uint32_t* indices, std::size_t co
     for (std::uint32_t x : lanes) m = x > m ? x : m;
     for (; i < count; ++i) m = indices[i] > m ? indices[i] : m;
     return m;
+}
+
+M3G_AVX2 bool skinRunsAvx2(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept {
+    if (job.inNormals.empty()) return false;
+    switch (job.influenceCount) {
+        case 0: return false;
+        case 1: skinRuns<1>(job, begin, end); return true;
+        case 2: skinRuns<2>(job, begin, end); return true;
+        case 3: skinRuns<3>(job, begin, end); return true;
+        case 4: skinRuns<4>(job, begin, end); return true;
+        default: skinRuns<-1>(job, begin, end); return true;
+    }
 }
 
 M3G_AVX2 void skinAvx2(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept {

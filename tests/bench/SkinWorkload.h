@@ -66,6 +66,9 @@ struct SkinWorkload {
     std::vector<WeightedTransform> records;      // the addTransform calls
     std::vector<float> boneToMesh, atRest;       // 16 per bone
     std::vector<std::uint32_t> all;              // 0 .. vertices - 1
+    // Built once, as SkinnedMesh::addTransform's table is: the vertices of
+    // `influences` slots split into shared-influence runs and loose ones.
+    m3g::skin::InfluencePartition partition;
     // Per-frame outputs and scratch (allocated once).
     std::vector<m3g::skin::PaletteEntry> palette;
     std::vector<float> outPositions, outNormals;
@@ -116,6 +119,7 @@ struct SkinWorkload {
         }
         all.resize(vertices);
         std::iota(all.begin(), all.end(), 0u);
+        partition.build(boneIndices, boneWeights, kMaxInfluences, vertices);
         palette.resize(static_cast<std::size_t>(bones));
         outPositions.resize(vertices * 3);
         outNormals.resize(vertices * 3);
@@ -151,7 +155,8 @@ struct SkinWorkload {
         pj.output = palette;
         if (!pj.run()) return false;
         m3g::skin::SkinningJob job;
-        job.vertices = all;
+        job.vertices = partition.loose(influences);
+        job.runs = partition.runs(influences);
         job.vertexCount = vertices;
         job.influenceCount = influences;
         job.influenceStride = kMaxInfluences;

@@ -76,22 +76,25 @@ void skinArgs(benchmark::internal::Benchmark* b) {
 }
 BENCHMARK(BM_Skin)->Apply(skinArgs)->Unit(benchmark::kMicrosecond)->UseRealTime();
 
-// Every vertex with its own bones and weights (runLength 1): no two
-// neighbours share influences, so the AVX2 kernel's per-vertex blend path
-// runs instead of its shared-influence (uniform block) path.
-void BM_SkinDistinct(benchmark::State& state) {
+// Shared-influence runs of other lengths than BM_Skin's 16: runLength 1
+// (every vertex with its own bones and weights, no two neighbours alike:
+// all vertices take the per-vertex blend path), 4 (the shortest run kept
+// as a run), 16 and 256 (the per-run cost spread thin).
+void BM_SkinRunLength(benchmark::State& state) {
     const auto v = static_cast<std::size_t>(state.range(0));
     const int k = static_cast<int>(state.range(1));
-    const auto variant = static_cast<Variant>(state.range(2));
-    static std::map<std::pair<std::size_t, int>, std::unique_ptr<m3gbench::SkinWorkload>> cache;
-    auto& slot = cache[{v, k}];
-    if (!slot) slot = std::make_unique<m3gbench::SkinWorkload>(v, k, 60, 1);
+    const int run = static_cast<int>(state.range(2));
+    const auto variant = static_cast<Variant>(state.range(3));
+    static std::map<std::tuple<std::size_t, int, int>, std::unique_ptr<m3gbench::SkinWorkload>> cache;
+    auto& slot = cache[{v, k, run}];
+    if (!slot) slot = std::make_unique<m3gbench::SkinWorkload>(v, k, 60, run);
     runFrames(state, *slot, variant, v);
 }
-BENCHMARK(BM_SkinDistinct)
-    ->ArgNames({"vertices", "influences", "variant"})
+BENCHMARK(BM_SkinRunLength)
+    ->ArgNames({"vertices", "influences", "run", "variant"})
     ->ArgsProduct({{10000, 100000, 1000000},
                    {1, 4},
+                   {1, 4, 16, 256},
                    {static_cast<std::int64_t>(Variant::Sse2), static_cast<std::int64_t>(Variant::Avx2),
                     static_cast<std::int64_t>(Variant::Parallel)}})
     ->Unit(benchmark::kMicrosecond)
@@ -121,6 +124,32 @@ BENCHMARK(BM_SkinStreamRoof)
     ->ArgsProduct({{100, 350, 500, 1200, 10000, 100000, 1000000}, {0, 1}})
     ->Unit(benchmark::kMicrosecond)
     ->UseRealTime();
+
+// The palette alone (one entry per bone per frame): what a small mesh's
+// frame pays before its first vertex. Scalar (double) and AVX2 (float).
+void BM_SkinPalette(benchmark::State& state) {
+    const auto bones = static_cast<std::size_t>(state.range(0));
+    const auto isa = state.range(1) != 0 ? m3g::skin::Isa::Avx2 : m3g::skin::Isa::Scalar;
+    auto& w = skinWorkload(100, 1, static_cast<int>(bones));
+    m3g::skin::PaletteJob job;
+    job.boneCount = bones;
+    job.boneToMesh = w.boneToMesh;
+    job.atRest = w.atRest;
+    job.output = w.palette;
+    job.isa = isa;
+    if (!job.run()) {
+        state.SkipWithError("isa not supported on this CPU");
+        return;
+    }
+    for (auto _ : state) {
+        job.run();
+        benchmark::DoNotOptimize(w.palette.data());
+        benchmark::ClobberMemory();
+    }
+    state.counters["per_bone"] = benchmark::Counter(static_cast<double>(bones), benchmark::Counter::kIsIterationInvariantRate |
+                                                                                   benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_SkinPalette)->ArgNames({"bones", "avx2"})->ArgsProduct({{20, 60}, {0, 1}})->Unit(benchmark::kNanosecond);
 
 void BM_Morph(benchmark::State& state) {
     const auto v = static_cast<std::size_t>(state.range(0));

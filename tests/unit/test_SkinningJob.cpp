@@ -22,6 +22,7 @@
 #include <m3g/skin/Skinning.h>
 #include <m3g/skin/ThreadPool.h>
 
+#include "SkinRandomMesh.h"
 #include "SkinReference.h"
 
 using namespace m3g::skin;
@@ -439,111 +440,10 @@ TEST(ThreadPool, ConcurrentCallersAreSafe) {
 
 // ------------------------------------- random meshes: every path agrees
 
-namespace {
-
-struct RandomMesh {
-    int n = 4;
-    std::size_t vertices = 0;
-    std::vector<m3gtest::WeightedTransform> records;
-    InfluenceTable table{4};
-    std::vector<float> boneToMesh, atRest;  // 16 per bone
-    std::vector<float> raw, normals;        // kernel inputs
-    float scale = 0.75f;
-    std::array<float, 3> bias{0.5f, -1.0f, 2.0f};
-
-    /// recordCount random addTransform records; or, with runLength > 0,
-    /// records in runs the way exporters write skins: every run of
-    /// runLength vertices gets `recordCount` distinct bones (1..4) with
-    /// random weights, so neighbours share their influences.
-    RandomMesh(std::uint32_t seed, std::size_t vertexCount, int bones, int recordCount, int runLength = 0)
-        : vertices(vertexCount) {
-        std::mt19937 rng(seed);
-        std::uniform_int_distribution<int> bone(0, bones - 1), weight(1, 6), len(1, 40);
-        std::uniform_int_distribution<int> first(0, static_cast<int>(vertexCount) - 1);
-        if (runLength > 0) {
-            std::vector<int> pool(static_cast<std::size_t>(bones));
-            std::iota(pool.begin(), pool.end(), 0);
-            for (int f = 0; f < static_cast<int>(vertexCount); f += runLength) {
-                const int c = std::min(runLength, static_cast<int>(vertexCount) - f);
-                std::shuffle(pool.begin(), pool.end(), rng);
-                for (int k = 0; k < recordCount; ++k) {
-                    records.push_back({pool[static_cast<std::size_t>(k)], weight(rng), f, c});
-                    table.add(records.back().bone, records.back().weight, f, c);
-                }
-            }
-        }
-        for (int i = 0; runLength == 0 && i < recordCount; ++i) {
-            const int f = first(rng);
-            const int c = std::min(len(rng), static_cast<int>(vertexCount) - f);
-            records.push_back({bone(rng), weight(rng), f, c});
-            table.add(records.back().bone, records.back().weight, f, c);
-        }
-        for (int b = 0; b < bones; ++b) {
-            const auto a = m3gtest::randomAffine(rng), r = m3gtest::randomAffine(rng);
-            boneToMesh.insert(boneToMesh.end(), a.begin(), a.end());
-            atRest.insert(atRest.end(), r.begin(), r.end());
-        }
-        std::uniform_real_distribution<float> u(-10.0f, 10.0f);
-        for (std::size_t i = 0; i < vertexCount * 3; ++i) raw.push_back(u(rng));
-        for (std::size_t v = 0; v < vertexCount; ++v) {
-            float x = u(rng), y = u(rng), z = u(rng);
-            if (v % 97 == 0) x = y = z = 0.0f;  // some zero normals
-            normals.insert(normals.end(), {x, y, z});
-        }
-    }
-    std::vector<double> meshSpace() const {
-        std::vector<double> p(raw.size());
-        for (std::size_t i = 0; i < raw.size(); ++i) p[i] = double(scale) * raw[i] + bias[i % 3];
-        return p;
-    }
-};
-
-/// A job skinning `vertices` of `m` (all with `influences` influences) into pos/nrm.
-SkinningJob meshJob(const RandomMesh& m, std::span<const std::uint32_t> vertices, int influences,
-                    const std::vector<PaletteEntry>& pal, Isa isa, std::vector<float>& pos, std::vector<float>& nrm) {
-    SkinningJob job;
-    job.vertices = vertices;
-    job.vertexCount = m.vertices;
-    job.influenceCount = influences;
-    job.influenceStride = m.n;
-    job.boneIndices = m.table.bones();
-    job.boneWeights = m.table.weights();
-    job.palette = pal;
-    job.positionScale = m.scale;
-    job.positionBias = m.bias;
-    job.inPositions = m.raw;
-    job.inNormals = m.normals;
-    job.outPositions = pos;
-    job.outNormals = nrm;
-    job.isa = isa;
-    return job;
-}
-
-/// Runs every group of the partition with `isa`; parallel on `pool` if given.
-void skinAll(const RandomMesh& m, const std::vector<PaletteEntry>& pal, Isa isa, std::vector<float>& pos,
-             std::vector<float>& nrm, ThreadPool* pool = nullptr, std::size_t grain = 4096) {
-    InfluencePartition part;
-    part.build(m.table.bones(), m.n, m.vertices);
-    pos.assign(m.vertices * 3, -999.0f);
-    nrm.assign(m.vertices * 3, -999.0f);
-    for (int c = 0; c <= part.maxInfluences(); ++c) {
-        SkinningJob job = meshJob(m, part.group(c), c, pal, isa, pos, nrm);
-        ASSERT_TRUE(pool ? job.runParallel(*pool, grain) : job.run()) << "group " << c;
-    }
-}
-
-std::vector<PaletteEntry> paletteOf(const RandomMesh& m) {
-    std::vector<PaletteEntry> pal(m.boneToMesh.size() / 16);
-    PaletteJob job;
-    job.boneCount = pal.size();
-    job.boneToMesh = m.boneToMesh;
-    job.atRest = m.atRest;
-    job.output = pal;
-    EXPECT_TRUE(job.run());
-    return pal;
-}
-
-}  // namespace
+using m3gtest::meshJob;
+using m3gtest::paletteOf;
+using m3gtest::RandomMesh;
+using m3gtest::skinAll;
 
 TEST(SkinningJob, EveryPathAgreesWithDoubleReferenceAndPaperBaseline) {
     for (std::uint32_t seed : {1u, 2u, 3u}) {
@@ -571,11 +471,14 @@ TEST(SkinningJob, EveryPathAgreesWithDoubleReferenceAndPaperBaseline) {
         const auto pal = paletteOf(m);
         for (Isa isa : kPaths) {
             if (!isaSupported(isa)) continue;
-            std::vector<float> pos, nrm;
-            skinAll(m, pal, isa, pos, nrm);
-            EXPECT_TRUE(m3gtest::closeXyz(pos, ref.positions)) << isaName(isa) << " positions, seed " << seed;
-            EXPECT_TRUE(m3gtest::closeXyz(nrm, ref.normals)) << isaName(isa) << " normals, seed " << seed;
-            EXPECT_TRUE(m3gtest::closeXyz(pos, bp)) << isaName(isa) << " vs baseline, seed " << seed;
+            for (bool runs : {false, true}) {
+                const std::string what = std::string(isaName(isa)) + (runs ? " runs" : " lists");
+                std::vector<float> pos, nrm;
+                skinAll(m, pal, isa, pos, nrm, nullptr, 4096, runs);
+                EXPECT_TRUE(m3gtest::closeXyz(pos, ref.positions)) << what << " positions, seed " << seed;
+                EXPECT_TRUE(m3gtest::closeXyz(nrm, ref.normals)) << what << " normals, seed " << seed;
+                EXPECT_TRUE(m3gtest::closeXyz(pos, bp)) << what << " vs baseline, seed " << seed;
+            }
         }
     }
 }
@@ -585,17 +488,19 @@ TEST(SkinningJob, ParallelRunIsBitIdenticalForAnyThreadCount) {
     const auto pal = paletteOf(m);
     for (Isa isa : kPaths) {
         if (!isaSupported(isa)) continue;
-        std::vector<float> pos, nrm;
-        skinAll(m, pal, isa, pos, nrm);
-        for (int threads : {1, 2, 3, 5}) {
-            ThreadPool pool(threads);
-            for (std::size_t grain : {1u, 7u, 256u}) {
-                std::vector<float> p2, n2;
-                skinAll(m, pal, isa, p2, n2, &pool, grain);
-                EXPECT_EQ(0, std::memcmp(pos.data(), p2.data(), pos.size() * sizeof(float)))
-                    << isaName(isa) << ", " << threads << " threads, grain " << grain;
-                EXPECT_EQ(0, std::memcmp(nrm.data(), n2.data(), nrm.size() * sizeof(float)))
-                    << isaName(isa) << ", " << threads << " threads, grain " << grain;
+        for (bool runs : {false, true}) {
+            std::vector<float> pos, nrm;
+            skinAll(m, pal, isa, pos, nrm, nullptr, 4096, runs);
+            for (int threads : {1, 2, 3, 5}) {
+                ThreadPool pool(threads);
+                for (std::size_t grain : {1u, 7u, 256u}) {
+                    std::vector<float> p2, n2;
+                    skinAll(m, pal, isa, p2, n2, &pool, grain, runs);
+                    const std::string what = std::string(isaName(isa)) + (runs ? " runs, " : " lists, ") +
+                                             std::to_string(threads) + " threads, grain " + std::to_string(grain);
+                    EXPECT_EQ(0, std::memcmp(pos.data(), p2.data(), pos.size() * sizeof(float))) << what;
+                    EXPECT_EQ(0, std::memcmp(nrm.data(), n2.data(), nrm.size() * sizeof(float))) << what;
+                }
             }
         }
     }

@@ -31,9 +31,11 @@ static_assert(sizeof(PaletteEntry) == 96, "PaletteEntry must match the std430 la
 /// Both inputs are 4x4 matrices in M3G's Transform order (row-major, element
 /// index row * 4 + col), 16 floats per bone. Only their top three rows are
 /// used: node transforms are affine (Node::setTransform rejects a W row other
-/// than 0 0 0 1), so the products are too. The product and the inverse are
-/// computed in double precision and rounded once (on AVX2 + FMA CPUs with
-/// FMAs, which can round the double intermediates differently).
+/// than 0 0 0 1), so the products are too. The scalar and SSE2 paths compute
+/// the product and the inverse in double precision and round once; the AVX2
+/// path computes them in single precision with FMAs, two bones at a time
+/// (within a few units in the last place of the double result for
+/// well-conditioned bones: the palette is most of a small mesh's frame).
 struct PaletteJob {
     /// Number of entries to compute.
     std::size_t boneCount = 0;

@@ -21,6 +21,19 @@ namespace m3g::skin {
 
 class ThreadPool;
 
+/// Consecutive vertices [firstVertex, firstVertex + vertexCount) that all have
+/// the same influences (bone and weight bit patterns of every used slot):
+/// what SkinnedMesh::addTransform ranges give. The kernels blend the run's
+/// palette entries once and read no per-vertex influence data for it.
+/// `start` is the run's first position in its job's run sequence: the sum of
+/// the counts of the runs before it (SkinningJob::validate checks this), so
+/// that a chunk of the sequence finds its run by binary search.
+struct InfluenceRun {
+    std::uint32_t firstVertex = 0;
+    std::uint32_t vertexCount = 0;
+    std::uint32_t start = 0;
+};
+
 struct SkinningJob {
     /// The vertices to process (indices into the per-vertex arrays below).
     /// Each index must be < vertexCount. Order and duplicates are allowed;
@@ -28,6 +41,11 @@ struct SkinningJob {
     std::span<const std::uint32_t> vertices;
     /// Number of vertices in the per-vertex arrays.
     std::size_t vertexCount = 0;
+    /// More vertices to process, as runs sharing their influences (built by
+    /// InfluencePartition). Every vertex of a run gets the influences of the
+    /// run's first vertex: a run whose vertices differ is computed with the
+    /// first one's slots for all (still never read or written out of bounds).
+    std::span<const InfluenceRun> runs;
 
     /// Influences used per listed vertex: slots 0 .. influenceCount-1.
     /// 0 means "no bone": the vertex stays in mesh space (s * p + bias, the
@@ -67,39 +85,61 @@ struct SkinningJob {
     /// vertices at its stride (strides >= 3), normals are both present or
     /// both absent, influenceCount <= influenceStride, the influence arrays
     /// reach the listed vertices, every listed vertex is < vertexCount (one
-    /// max reduction over the list) and the ISA is supported. The bone
+    /// max reduction over the list), every run lies inside the arrays with
+    /// consistent `start` values, and the ISA is supported. The bone
     /// indices are not scanned (see boneIndices). Like ozz-animation, cheap
     /// enough to run on every call.
     bool validate() const noexcept;
     /// validate(), then skins every listed vertex. Returns validate().
     bool run() const noexcept;
-    /// validate() once, then runs the list in chunks of `grain` vertices on
-    /// `pool`. The chunks do not depend on the pool's size and each vertex is
-    /// computed the same way in any chunk, so the output is bit-identical to
-    /// run() for any thread count.
+    /// validate() once, then runs the list, and the runs, in chunks of
+    /// `grain` vertices on `pool`. The chunks do not depend on the pool's
+    /// size and each vertex is computed the same way in any chunk, so the
+    /// output is bit-identical to run() for any thread count.
     bool runParallel(ThreadPool& pool, std::size_t grain = 4096) const noexcept;
 };
 
 /// A mesh's vertices grouped by influence count (number of filled slots of
 /// an InfluenceTable-layout bone array: slots are filled from 0, -1 = empty),
 /// ascending vertex order within a group. Vertices beyond the table have no
-/// influence. Rebuilt only when the table changes; reuses its storage.
+/// influence. With weights, each group (count >= 1) is further split into
+/// runs of at least kMinRun consecutive vertices with the same slots
+/// (InfluenceRun) and the loose vertices left over, which is what a
+/// SkinningJob takes. Rebuilt only when the table changes (the paper's
+/// bookkeeping at addTransform time, not per frame); reuses its storage.
 class InfluencePartition {
 public:
+    /// Shortest run kept as a run: half an eight-lane block of the AVX2
+    /// kernel (from four vertices on, one blend per run costs no more than
+    /// the loose path's blend per vertex; BM_SkinRunLength).
+    static constexpr std::size_t kMinRun = 4;
+
     /// Groups vertices [0, vertexCount). `boneIndices` holds
     /// tableVertexCount * stride slots (tableVertexCount may be smaller or
-    /// larger than vertexCount).
+    /// larger than vertexCount). No runs: loose(c) is group(c).
     void build(std::span<const std::int32_t> boneIndices, int stride, std::size_t vertexCount);
+    /// The same, and runs found by comparing the bones and `boneWeights`
+    /// (same layout and size as boneIndices) of neighbouring vertices.
+    void build(std::span<const std::int32_t> boneIndices, std::span<const float> boneWeights, int stride,
+               std::size_t vertexCount);
 
     /// Largest group index (= stride after build()).
     int maxInfluences() const noexcept { return static_cast<int>(offsets_.size()) - 2; }
     /// Vertices with exactly `count` influences (empty for count out of range).
     std::span<const std::uint32_t> group(int count) const noexcept;
+    /// The vertices of group(count) that are in no run, ascending.
+    std::span<const std::uint32_t> loose(int count) const noexcept;
+    /// The runs of group(count), ascending, `start` counted from 0.
+    std::span<const InfluenceRun> runs(int count) const noexcept;
 
 private:
     std::vector<std::uint32_t> vertices_;
     std::vector<std::size_t> offsets_;  // group c = [offsets_[c], offsets_[c + 1])
     std::vector<std::size_t> cursor_;   // build() scratch
+    std::vector<std::uint32_t> loose_;
+    std::vector<std::size_t> looseOffsets_;
+    std::vector<InfluenceRun> runs_;
+    std::vector<std::size_t> runOffsets_;
 };
 
 }  // namespace m3g::skin

@@ -1,0 +1,361 @@
+// Shared-influence runs (skin::InfluenceRun): how InfluencePartition finds
+// them, what SkinningJob::validate accepts, and that skinning a mesh as runs
+// gives what the vertex-list path and the double reference give, on every
+// ISA, at any stride, chunking and thread count (spec digest §5.11; the
+// founding paper's bookkeeping done when addTransform is called).
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "SkinRandomMesh.h"
+#include "SkinReference.h"
+
+using namespace m3g::skin;
+
+namespace {
+
+std::vector<std::uint32_t> as(std::span<const std::uint32_t> s) { return {s.begin(), s.end()}; }
+
+struct RunList {
+    std::vector<InfluenceRun> runs;
+    bool operator==(const std::vector<InfluenceRun>& o) const {
+        if (o.size() != runs.size()) return false;
+        for (std::size_t i = 0; i < runs.size(); ++i)
+            if (runs[i].firstVertex != o[i].firstVertex || runs[i].vertexCount != o[i].vertexCount ||
+                runs[i].start != o[i].start)
+                return false;
+        return true;
+    }
+};
+RunList runsOf(std::span<const InfluenceRun> s) { return {{s.begin(), s.end()}}; }
+
+std::string describe(std::span<const InfluenceRun> s) {
+    std::string out;
+    for (const InfluenceRun& r : s)
+        out += "{" + std::to_string(r.firstVertex) + "," + std::to_string(r.vertexCount) + "," +
+               std::to_string(r.start) + "} ";
+    return out;
+}
+
+}  // namespace
+
+// A hand-built table, stride 2:
+//   v0..v9    bone 0, weight 1            (1 influence)  -> one run of 10
+//   v10..v12  bone 1, weight 1            (1 influence)  -> 3 vertices: loose
+//   v13       no bone                                     -> group 0
+//   v14..v18  bones 0, 1, weights .5 .5   (2 influences) -> run of 5
+//   v19..v22  bones 0, 1, weights .25 .75                -> run of 4 (weights differ)
+//   v23, v24  beyond the table                            -> group 0
+TEST(InfluencePartition, SplitsGroupsIntoRunsOfSharedInfluencesAndLooseVertices) {
+    std::vector<std::int32_t> bones;
+    std::vector<float> weights;
+    auto add = [&](int count, std::int32_t b0, std::int32_t b1, float w0, float w1) {
+        for (int i = 0; i < count; ++i) {
+            bones.insert(bones.end(), {b0, b1});
+            weights.insert(weights.end(), {w0, w1});
+        }
+    };
+    add(10, 0, -1, 1.0f, 0.0f);
+    add(3, 1, -1, 1.0f, 0.0f);
+    add(1, -1, -1, 0.0f, 0.0f);
+    add(5, 0, 1, 0.5f, 0.5f);
+    add(4, 0, 1, 0.25f, 0.75f);
+    InfluencePartition p;
+    p.build(bones, weights, 2, 25);
+    EXPECT_EQ(as(p.group(0)), (std::vector<std::uint32_t>{13, 23, 24}));
+    EXPECT_EQ(as(p.loose(0)), (std::vector<std::uint32_t>{13, 23, 24}));
+    EXPECT_TRUE(p.runs(0).empty());
+    std::vector<std::uint32_t> g1(13);
+    std::iota(g1.begin(), g1.end(), 0u);
+    EXPECT_EQ(as(p.group(1)), g1);
+    EXPECT_EQ(as(p.loose(1)), (std::vector<std::uint32_t>{10, 11, 12}));
+    EXPECT_TRUE(runsOf(p.runs(1)) == (std::vector<InfluenceRun>{{0, 10, 0}})) << describe(p.runs(1));
+    EXPECT_TRUE(p.loose(2).empty());
+    EXPECT_TRUE(runsOf(p.runs(2)) == (std::vector<InfluenceRun>{{14, 5, 0}, {19, 4, 5}})) << describe(p.runs(2));
+    EXPECT_TRUE(p.runs(3).empty());
+    EXPECT_TRUE(p.loose(-1).empty());
+
+    // A run is broken by a gap in the group (v5 moved to group 2 with its
+    // own bones): v0..v4 (5) and v6..v9 (4) are runs.
+    bones[5 * 2 + 1] = 3;
+    weights[5 * 2] = 0.5f;
+    weights[5 * 2 + 1] = 0.5f;
+    p.build(bones, weights, 2, 25);
+    EXPECT_TRUE(runsOf(p.runs(1)) == (std::vector<InfluenceRun>{{0, 5, 0}, {6, 4, 5}})) << describe(p.runs(1));
+    EXPECT_EQ(as(p.loose(2)), (std::vector<std::uint32_t>{5}));
+
+    // Without weights: no runs, every vertex loose.
+    p.build(bones, 2, 25);
+    for (int c = 0; c <= 2; ++c) {
+        EXPECT_TRUE(p.runs(c).empty()) << c;
+        EXPECT_EQ(as(p.loose(c)), as(p.group(c))) << c;
+    }
+}
+
+namespace {
+
+/// A small valid job over `n` packed vertices, 1 influence of bone 0.
+struct RunJob {
+    std::vector<PaletteEntry> pal{PaletteEntry{{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}}};
+    std::vector<std::int32_t> bones;
+    std::vector<float> weights, in, nin, out, nout;
+    std::vector<InfluenceRun> runs;
+    SkinningJob job;
+    explicit RunJob(std::size_t n) : bones(n, 0), weights(n, 1.0f), in(n * 3, 1.0f), nin(n * 3, 1.0f),
+                                     out(n * 3), nout(n * 3) {
+        job.vertexCount = n;
+        job.influenceCount = 1;
+        job.influenceStride = 1;
+        job.boneIndices = bones;
+        job.boneWeights = weights;
+        job.palette = pal;
+        job.inPositions = in;
+        job.inNormals = nin;
+        job.outPositions = out;
+        job.outNormals = nout;
+    }
+    bool validWith(std::vector<InfluenceRun> r) {
+        runs = std::move(r);
+        job.runs = runs;
+        return job.validate();
+    }
+};
+
+}  // namespace
+
+TEST(SkinningJob, ValidateChecksRuns) {
+    RunJob j(20);
+    EXPECT_TRUE(j.validWith({}));
+    EXPECT_TRUE(j.validWith({{0, 8, 0}, {8, 12, 8}}));
+    EXPECT_TRUE(j.validWith({{0, 0, 0}, {3, 0, 0}, {0, 20, 0}}));  // empty runs share the next start
+    EXPECT_FALSE(j.validWith({{0, 8, 1}})) << "start must be the sum of the counts before";
+    EXPECT_FALSE(j.validWith({{0, 8, 0}, {8, 4, 7}}));
+    EXPECT_FALSE(j.validWith({{13, 8, 0}})) << "past vertexCount";
+    EXPECT_FALSE(j.validWith({{0xFFFFFFF0u, 0x20u, 0}})) << "first + count wraps";
+    // Influence arrays shorter than the vertex arrays: runs must stay inside them.
+    j.bones.resize(12);
+    j.weights.resize(12);
+    j.job.boneIndices = j.bones;
+    j.job.boneWeights = j.weights;
+    EXPECT_TRUE(j.validWith({{4, 8, 0}}));
+    EXPECT_FALSE(j.validWith({{5, 8, 0}}));
+    // No influence: only the vertex count bounds the runs.
+    j.job.influenceCount = 0;
+    EXPECT_TRUE(j.validWith({{5, 15, 0}}));
+    EXPECT_FALSE(j.validWith({{5, 16, 0}}));
+}
+
+// Hand-computed: one run of 11 vertices (one full block and a 3-vertex
+// tail) with bone 0 = translation (1, 2, 3) at weight 0.25 and bone 1 =
+// rotation z 90 degrees at 0.75, scale 2 and bias (0, 0, 1):
+// p = (x, 0, 0) -> s*p + b = (2x, 0, 1); translated (2x+1, 2, 4); rotated
+// (0, 2x, 1); blend: (0.25 (2x+1), 0.5 + 1.5x, 1.75).
+// Normal (1, 0, 0) -> 0.25 (1, 0, 0) + 0.75 (0, 1, 0), renormalised.
+TEST(SkinningJob, RunOfTwoInfluencesHandComputedOnEveryPath) {
+    const std::size_t n = 11;
+    std::vector<PaletteEntry> pal(2);
+    {
+        const float a[32] = {1, 0, 0, 1, 0, 1, 0, 2, 0, 0, 1, 3, 0, 0, 0, 1,
+                             0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+        const float id[32] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1,
+                              1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+        PaletteJob pj;
+        pj.boneCount = 2;
+        pj.boneToMesh = a;
+        pj.atRest = id;
+        pj.output = pal;
+        ASSERT_TRUE(pj.run());
+    }
+    std::vector<std::int32_t> bones;
+    std::vector<float> weights;
+    std::vector<float> in, nin;
+    for (std::size_t v = 0; v < n; ++v) {
+        bones.insert(bones.end(), {1, 0, -1, -1});
+        weights.insert(weights.end(), {0.75f, 0.25f, 0.0f, 0.0f});
+        in.insert(in.end(), {static_cast<float>(v), 0.0f, 0.0f});
+        nin.insert(nin.end(), {1.0f, 0.0f, 0.0f});
+    }
+    const std::vector<InfluenceRun> runs{{0, static_cast<std::uint32_t>(n), 0}};
+    const float len = std::sqrt(0.25f * 0.25f + 0.75f * 0.75f);
+    for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2}) {
+        if (!isaSupported(isa)) continue;
+        std::vector<float> out(n * 3, -9.0f), nout(n * 3, -9.0f);
+        SkinningJob job;
+        job.runs = runs;
+        job.vertexCount = n;
+        job.influenceCount = 2;
+        job.influenceStride = 4;
+        job.boneIndices = bones;
+        job.boneWeights = weights;
+        job.palette = pal;
+        job.positionScale = 2.0f;
+        job.positionBias = {0.0f, 0.0f, 1.0f};
+        job.inPositions = in;
+        job.inNormals = nin;
+        job.outPositions = out;
+        job.outNormals = nout;
+        job.isa = isa;
+        ASSERT_TRUE(job.run()) << isaName(isa);
+        for (std::size_t v = 0; v < n; ++v) {
+            const float x = static_cast<float>(v);
+            const std::string what = std::string(isaName(isa)) + " vertex " + std::to_string(v);
+            EXPECT_NEAR(out[v * 3], 0.25f * (2 * x + 1), 1e-5f) << what;
+            EXPECT_NEAR(out[v * 3 + 1], 0.5f + 1.5f * x, 1e-5f) << what;
+            EXPECT_NEAR(out[v * 3 + 2], 1.75f, 1e-5f) << what;
+            EXPECT_NEAR(nout[v * 3], 0.25f / len, 1e-6f) << what;
+            EXPECT_NEAR(nout[v * 3 + 1], 0.75f / len, 1e-6f) << what;
+            EXPECT_NEAR(nout[v * 3 + 2], 0.0f, 1e-6f) << what;
+        }
+    }
+}
+
+// Random meshes written in runs (lengths 16, 13, 5 and 4, so runs start
+// anywhere in an eight-lane block and end in tails of every length), 1..4
+// influences: runs + loose vertices agree with the double reference and
+// with the list path, and the parallel run is bit-identical to run() for
+// any grain (grains that cut runs) and thread count.
+TEST(SkinningJob, RunsAgreeWithReferenceAndListPathAndAreBitIdenticalAcrossChunks) {
+    for (int k = 1; k <= 4; ++k) {
+        for (int run : {16, 13, 5, 4}) {
+            m3gtest::RandomMesh m(200u + static_cast<std::uint32_t>(k * 10 + run), 2003, 30, k, run);
+            const auto pal = m3gtest::paletteOf(m);
+            const std::vector<double> mesh = m.meshSpace();
+            const std::vector<double> a(m.boneToMesh.begin(), m.boneToMesh.end()), r(m.atRest.begin(), m.atRest.end());
+            const std::vector<double> n(m.normals.begin(), m.normals.end());
+            const auto ref = m3gtest::referenceSkin(m.records, m.n, a, r, m.vertices, mesh, n);
+            InfluencePartition part;
+            part.build(m.table.bones(), m.table.weights(), m.n, m.vertices);
+            ASSERT_FALSE(part.runs(k).empty()) << k << " influences, run " << run;
+            for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2}) {
+                if (!isaSupported(isa)) continue;
+                const std::string what =
+                    std::string(isaName(isa)) + ", " + std::to_string(k) + " influences, run " + std::to_string(run);
+                std::vector<float> pos, nrm, listPos, listNrm;
+                m3gtest::skinAll(m, pal, isa, pos, nrm, nullptr, 4096, true);
+                m3gtest::skinAll(m, pal, isa, listPos, listNrm, nullptr, 4096, false);
+                EXPECT_TRUE(m3gtest::closeXyz(pos, ref.positions)) << what << " positions";
+                EXPECT_TRUE(m3gtest::closeXyz(nrm, ref.normals)) << what << " normals";
+                for (std::size_t i = 0; i < pos.size(); ++i) {
+                    ASSERT_NEAR(pos[i], listPos[i], 2e-5f * std::max(1.0f, std::abs(listPos[i]))) << what << " " << i;
+                    ASSERT_NEAR(nrm[i], listNrm[i], 2e-6f) << what << " normal " << i;
+                }
+                for (int threads : {1, 2, 3}) {
+                    ThreadPool pool(threads);
+                    for (std::size_t grain : {1u, 5u, 7u, 12u, 256u}) {
+                        std::vector<float> p2, n2;
+                        m3gtest::skinAll(m, pal, isa, p2, n2, &pool, grain, true);
+                        EXPECT_EQ(0, std::memcmp(pos.data(), p2.data(), pos.size() * sizeof(float)))
+                            << what << ", " << threads << " threads, grain " << grain;
+                        EXPECT_EQ(0, std::memcmp(nrm.data(), n2.data(), nrm.size() * sizeof(float)))
+                            << what << ", " << threads << " threads, grain " << grain;
+                    }
+                }
+            }
+        }
+    }
+}
+
+// Interleaved arrays (positions at stride 4, normals at 5, outputs at 6 and
+// 7, with padding that must stay untouched) and arrays that end right after
+// the last vertex: the run path gathers and scatters lane by lane and agrees
+// with the list path.
+TEST(SkinningJob, RunsAtOtherStridesTouchOnlyTheirVertices) {
+    m3gtest::RandomMesh m(77, 203, 12, 3, 29);
+    const auto pal = m3gtest::paletteOf(m);
+    InfluencePartition part;
+    part.build(m.table.bones(), m.table.weights(), m.n, m.vertices);
+    const std::size_t n = m.vertices;
+    std::vector<float> in((n - 1) * 4 + 3), nin((n - 1) * 5 + 3);
+    for (std::size_t v = 0; v < n; ++v)
+        for (int c = 0; c < 3; ++c) {
+            in[v * 4 + c] = m.raw[v * 3 + c];
+            nin[v * 5 + c] = m.normals[v * 3 + c];
+        }
+    for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2}) {
+        if (!isaSupported(isa)) continue;
+        std::vector<float> listPos, listNrm;
+        m3gtest::skinAll(m, pal, isa, listPos, listNrm, nullptr, 4096, false);
+        std::vector<float> out((n - 1) * 6 + 3, -7.0f), nout((n - 1) * 7 + 3, -7.0f);
+        for (int c = 0; c <= 4; ++c) {
+            SkinningJob job = m3gtest::meshJob(m, part.loose(c), c, pal, isa, out, nout);
+            job.runs = part.runs(c);
+            job.inPositions = in;
+            job.inPositionStride = 4;
+            job.inNormals = nin;
+            job.inNormalStride = 5;
+            job.outPositionStride = 6;
+            job.outNormalStride = 7;
+            ASSERT_TRUE(job.run()) << isaName(isa) << " group " << c;
+        }
+        for (std::size_t v = 0; v < n; ++v)
+            for (std::size_t c = 0; c < 7; ++c) {
+                const std::string what = std::string(isaName(isa)) + " vertex " + std::to_string(v);
+                if (c < 3) {
+                    ASSERT_NEAR(out[v * 6 + c], listPos[v * 3 + c], 2e-5f * std::max(1.0f, std::abs(listPos[v * 3 + c])))
+                        << what;
+                    ASSERT_NEAR(nout[v * 7 + c], listNrm[v * 3 + c], 2e-6f) << what;
+                } else {
+                    if (v * 6 + c < out.size() && c < 6) {
+                        ASSERT_EQ(out[v * 6 + c], -7.0f) << what << " padding";
+                    }
+                    if (v * 7 + c < nout.size()) {
+                        ASSERT_EQ(nout[v * 7 + c], -7.0f) << what << " normal padding";
+                    }
+                }
+            }
+    }
+}
+
+// A run whose shared slot names a bone outside the palette: that slot
+// contributes nothing (the checked formula), as on the list path.
+TEST(SkinningJob, RunWithABoneOutsideThePaletteSkipsThatSlot) {
+    const std::size_t n = 12;
+    std::vector<PaletteEntry> pal(1);
+    {
+        const float a[16] = {1, 0, 0, 5, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+        const float id[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+        PaletteJob pj;
+        pj.boneCount = 1;
+        pj.boneToMesh = a;
+        pj.atRest = id;
+        pj.output = pal;
+        ASSERT_TRUE(pj.run());
+    }
+    std::vector<std::int32_t> bones;
+    std::vector<float> weights, in, nin;
+    for (std::size_t v = 0; v < n; ++v) {
+        bones.insert(bones.end(), {0, 9});
+        weights.insert(weights.end(), {0.5f, 0.5f});
+        in.insert(in.end(), {1.0f, static_cast<float>(v), 0.0f});
+        nin.insert(nin.end(), {0.0f, 0.0f, 2.0f});
+    }
+    const std::vector<InfluenceRun> runs{{0, static_cast<std::uint32_t>(n), 0}};
+    for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2}) {
+        if (!isaSupported(isa)) continue;
+        std::vector<float> out(n * 3, -9.0f), nout(n * 3, -9.0f);
+        SkinningJob job;
+        job.runs = runs;
+        job.vertexCount = n;
+        job.influenceCount = 2;
+        job.influenceStride = 2;
+        job.boneIndices = bones;
+        job.boneWeights = weights;
+        job.palette = pal;
+        job.inPositions = in;
+        job.inNormals = nin;
+        job.outPositions = out;
+        job.outNormals = nout;
+        job.isa = isa;
+        ASSERT_TRUE(job.run()) << isaName(isa);
+        for (std::size_t v = 0; v < n; ++v) {
+            // 0.5 * ((1, v, 0) + (5, 0, 0)); the normal 0.5 (0, 0, 2) renormalised.
+            EXPECT_NEAR(out[v * 3], 3.0f, 1e-6f) << isaName(isa) << " vertex " << v;
+            EXPECT_NEAR(out[v * 3 + 1], 0.5f * static_cast<float>(v), 1e-6f) << isaName(isa) << " vertex " << v;
+            EXPECT_NEAR(out[v * 3 + 2], 0.0f, 1e-6f);
+            EXPECT_NEAR(nout[v * 3 + 2], 1.0f, 1e-6f) << isaName(isa) << " vertex " << v;
+        }
+    }
+}
