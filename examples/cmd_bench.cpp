@@ -26,6 +26,7 @@
 #include <vector>
 
 #include <m3g/skin/Isa.h>
+#include <m3g/skin/Skinning.h>
 #include <m3g/skin/ThreadPool.h>
 
 #include "ComputeBench.h"
@@ -180,7 +181,8 @@ int benchSkin(const BenchOptions& o) {
     std::vector<ComputeRow> computeRows;
     struct RoofRow {
         std::size_t vertices;
-        double avx2, parallel, stream, streamParallel;  // ns per vertex
+        double avx2, parallel;                // ns per vertex
+        double stream[2], streamParallel[2];  // [0]: run vertex (48 B), [1]: loose vertex (84 B)
     };
     std::vector<RoofRow> roofRows;
     printHeader("vertices", "infl", "bones");
@@ -219,38 +221,56 @@ int benchSkin(const BenchOptions& o) {
             }
             printRow(v, k, bones, ns);
             if (k == m3gbench::SkinWorkload::kMaxInfluences && ns[3] > 0) {
-                const m3gbench::SkinStreamRoof roof = w.streamRoof();
-                const double one = secondsPerFrame([&] { roof.frame(); }, o.seconds) * 1e9 / static_cast<double>(v);
-                const double all =
-                    secondsPerFrame([&] { roof.frame(&pool); }, o.seconds) * 1e9 / static_cast<double>(v);
-                roofRows.push_back({v, ns[3], ns[4], one, all});
+                RoofRow row{v, ns[3], ns[4], {}, {}};
+                for (int t = 0; t < 2; ++t) {
+                    const m3gbench::SkinStreamRoof roof = w.streamRoof(t == 1);
+                    const double perV = 1e9 / static_cast<double>(v);
+                    row.stream[t] = secondsPerFrame([&] { roof.frame(); }, o.seconds) * perV;
+                    row.streamParallel[t] = secondsPerFrame([&] { roof.frame(&pool); }, o.seconds) * perV;
+                }
+                roofRows.push_back(row);
             }
         }
     }
     if (!roofRows.empty()) {
-        constexpr double bytes = m3gbench::SkinStreamRoof::kBytesPerVertex;
+        // The workload's vertices are all in shared-influence runs (run
+        // length >= InfluencePartition::kMinRun), so the kernel moves the
+        // 48-byte stream's bytes; the 84-byte one is a loose vertex's.
+        const bool runs = static_cast<std::size_t>(o.runLength) >= m3g::skin::InfluencePartition::kMinRun;
+        const int t = runs ? 0 : 1;
+        const double bytes = runs ? double(m3gbench::SkinStreamRoof::kVertexBytes)
+                                  : double(m3gbench::SkinStreamRoof::kBytesPerVertex);
         std::printf("\nmemory-bandwidth reference, %d influences: a plain stream of the kernel's %.0f bytes per\n"
-                    "vertex (list entry, position, normal, %d bone indices and weights read; position and normal\n"
-                    "written), 1 thread and %d threads; 'share' = stream time / kernel time:\n"
-                    "%9s %10s %8s %9s %9s %7s %10s %8s %9s %9s %7s\n",
-                    m3gbench::SkinWorkload::kMaxInfluences, bytes, m3gbench::SkinWorkload::kMaxInfluences,
-                    pool.threadCount(), "vertices", "stream ns", "GB/s", "Mv/s", "avx2 ns", "share", "stream mt",
-                    "GB/s", "Mv/s", "mt ns", "share");
+                    "vertex (%s), 1 thread and %d threads; 'share' = stream time / kernel time;\n"
+                    "last columns: the %.0f-byte stream of %s:\n"
+                    "%9s %10s %8s %9s %9s %7s %10s %8s %9s %9s %7s %10s %10s\n",
+                    m3gbench::SkinWorkload::kMaxInfluences, bytes,
+                    runs ? "shared-influence runs: position and normal read and written; the influences once per run"
+                         : "loose vertices: list entry, position, normal, 4 bone indices and weights read; position "
+                           "and normal written",
+                    pool.threadCount(),
+                    runs ? double(m3gbench::SkinStreamRoof::kBytesPerVertex)
+                         : double(m3gbench::SkinStreamRoof::kVertexBytes),
+                    runs ? "a loose vertex" : "a run vertex", "vertices", "stream ns", "GB/s", "Mv/s", "avx2 ns",
+                    "share", "stream mt", "GB/s", "Mv/s", "mt ns", "share", "other ns", "other mt");
         for (const RoofRow& r : roofRows)
-            std::printf("%9zu %10.2f %8.1f %9.1f %9.2f %6.0f%% %10.2f %8.1f %9.1f %9.2f %6.0f%%\n", r.vertices,
-                        r.stream, bytes / r.stream, 1e3 / r.stream, r.avx2, 100.0 * r.stream / r.avx2,
-                        r.streamParallel, bytes / r.streamParallel, 1e3 / r.streamParallel, r.parallel,
-                        r.parallel > 0 ? 100.0 * r.streamParallel / r.parallel : 0.0);
+            std::printf("%9zu %10.2f %8.1f %9.1f %9.2f %6.0f%% %10.2f %8.1f %9.1f %9.2f %6.0f%% %10.2f %10.2f\n",
+                        r.vertices, r.stream[t], bytes / r.stream[t], 1e3 / r.stream[t], r.avx2,
+                        100.0 * r.stream[t] / r.avx2, r.streamParallel[t], bytes / r.streamParallel[t],
+                        1e3 / r.streamParallel[t], r.parallel,
+                        r.parallel > 0 ? 100.0 * r.streamParallel[t] / r.parallel : 0.0, r.stream[1 - t],
+                        r.streamParallel[1 - t]);
     }
     {
         // Per-vertex memory of the weights: ours is N slots, the paper's
         // dense table one weight per (vertex, bone).
         constexpr int n = m3gbench::SkinWorkload::kMaxInfluences;
-        std::printf("\ninfluence table per vertex (N = %d): %d bytes read per frame (N x int32 bone + N x float\n"
-                    "weight) + %d bytes of int64 accumulated weights kept for addTransform (never read by the\n"
-                    "kernel) = %d bytes; the paper's dense V x B float table: 4 x B bytes = %d (20 bones),\n"
-                    "%d (60 bones), whatever the influences per vertex.\n",
-                    n, 8 * n, 8 * n, 16 * n, 4 * 20, 4 * 60);
+        std::printf("\ninfluence table per vertex (N = %d): %d bytes (N x int32 bone + N x float weight) + %d bytes\n"
+                    "of int64 accumulated weights kept for addTransform (never read by the kernel) = %d bytes;\n"
+                    "read per frame: the %d for a loose vertex, and for a run of shared influences one vertex's\n"
+                    "%d plus the %zu-byte run record, whatever its length. The paper's dense V x B float table:\n"
+                    "4 x B bytes = %d (20 bones), %d (60 bones), whatever the influences per vertex.\n",
+                    n, 8 * n, 8 * n, 16 * n, 8 * n, 8 * n, sizeof(m3g::skin::InfluenceRun), 4 * 20, 4 * 60);
     }
     if (!computeRows.empty()) {
         std::printf("\ncompute path, 4 influences, positions + normals. frame: wall time of palette, upload,\n"

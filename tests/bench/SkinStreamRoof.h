@@ -3,11 +3,14 @@
 // moves (tests/bench/SkinWorkload.h's arrays), with next to no arithmetic, so
 // that a kernel's figure reads as a share of what the machine can move.
 //
-// Per vertex it reads the vertex-list entry (4 bytes), the position and the
-// normal (12 + 12), the N = 4 bone indices and weights (16 + 16), and writes
-// the output position and normal (12 + 12): 84 bytes, the kernel's traffic
-// (the palette, a few KiB, stays in L1 for both). The outputs are the inputs
-// with the influence words folded in by XOR, so no load is dead.
+// Two sizes. With `tables` (a loose vertex, the list path) it reads the
+// vertex-list entry (4 bytes), the position and the normal (12 + 12), the
+// N = 4 bone indices and weights (16 + 16), and writes the output position
+// and normal (12 + 12): 84 bytes. Without (a vertex of a shared-influence
+// run, whose influences are read once per run) only the position and normal
+// in and out: 48 bytes. The palette, a few KiB, stays in L1 for both. The
+// outputs are the inputs with the other words folded in by XOR, so no load
+// is dead.
 #pragma once
 
 #include <cstddef>
@@ -25,10 +28,15 @@
 namespace m3gbench {
 
 struct SkinStreamRoof {
-    /// Bytes per vertex the stream (and the kernel) moves.
-    static constexpr std::size_t kBytesRead = 4 + 12 + 12 + 16 + 16;
-    static constexpr std::size_t kBytesWritten = 12 + 12;
-    static constexpr std::size_t kBytesPerVertex = kBytesRead + kBytesWritten;
+    /// Bytes per vertex the stream (and the kernel) moves, with and without
+    /// the list entry and influence table.
+    static constexpr std::size_t kTableBytes = 4 + 16 + 16;
+    static constexpr std::size_t kVertexBytes = 12 + 12 + 12 + 12;
+    static constexpr std::size_t kBytesPerVertex = kTableBytes + kVertexBytes;
+
+    /// Whether the list entry and influence table are streamed too.
+    bool tables = true;
+    std::size_t bytesPerVertex() const noexcept { return tables ? kBytesPerVertex : kVertexBytes; }
 
     std::span<const std::uint32_t> vertices;  // V entries
     std::span<const float> positions, normals;  // 3V
@@ -64,8 +72,8 @@ struct SkinStreamRoof {
 private:
     void runPlain(std::size_t begin, std::size_t end) const noexcept {
         for (std::size_t i = begin; i < end; ++i) {
-            std::uint32_t mix = vertices[i];
-            for (int k = 0; k < 4; ++k) {
+            std::uint32_t mix = tables ? vertices[i] : 0x5A5A5A5Au;
+            for (int k = 0; tables && k < 4; ++k) {
                 std::uint32_t w;
                 std::memcpy(&w, &boneWeights[i * 4 + static_cast<std::size_t>(k)], 4);
                 mix ^= static_cast<std::uint32_t>(boneIndices[i * 4 + static_cast<std::size_t>(k)]) ^ w;
@@ -90,9 +98,10 @@ private:
     __attribute__((target("avx2"))) void runAvx2(std::size_t begin, std::size_t end) const noexcept {
         std::size_t i = begin;
         for (; i + 8 <= end; i += 8) {
-            // 8 vertices: 1 + 4 + 4 + 3 + 3 loads of 32 bytes, 3 + 3 stores.
-            __m256i mix = ld(vertices.data() + i);
-            for (int q = 0; q < 4; ++q) {
+            // 8 vertices: 1 + 4 + 4 + 3 + 3 loads of 32 bytes, 3 + 3 stores
+            // (3 + 3 loads without the tables).
+            __m256i mix = tables ? ld(vertices.data() + i) : _mm256_set1_epi32(0x5A5A5A5A);
+            for (int q = 0; tables && q < 4; ++q) {
                 mix = _mm256_xor_si256(mix, ld(boneIndices.data() + i * 4 + 8 * q));
                 mix = _mm256_xor_si256(mix, ld(boneWeights.data() + i * 4 + 8 * q));
             }

@@ -126,9 +126,11 @@ struct SkinWorkload {
     }
 
     /// The memory-bandwidth reference over this workload's arrays (meant for
-    /// influences == kMaxInfluences, whose bytes it moves).
-    SkinStreamRoof streamRoof() {
+    /// influences == kMaxInfluences, whose bytes it moves); without `tables`,
+    /// the bytes of a vertex in a shared-influence run.
+    SkinStreamRoof streamRoof(bool tables = true) {
         SkinStreamRoof r;
+        r.tables = tables;
         r.vertices = all;
         r.positions = positions;
         r.normals = normals;

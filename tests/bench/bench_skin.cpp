@@ -101,12 +101,13 @@ BENCHMARK(BM_SkinRunLength)
     ->UseRealTime();
 
 // The memory-bandwidth reference: a plain stream of the 4-influence
-// kernel's bytes per vertex (SkinStreamRoof.h), 1 thread or the pool.
+// kernel's bytes per vertex (SkinStreamRoof.h), 1 thread or the pool;
+// tables 1: a loose vertex's 84 bytes, 0: a run vertex's 48.
 void BM_SkinStreamRoof(benchmark::State& state) {
     const auto v = static_cast<std::size_t>(state.range(0));
     const bool parallel = state.range(1) != 0;
     auto& w = skinWorkload(v, m3gbench::SkinWorkload::kMaxInfluences, v <= 1200 ? 20 : 60);
-    const m3gbench::SkinStreamRoof roof = w.streamRoof();
+    const m3gbench::SkinStreamRoof roof = w.streamRoof(state.range(2) != 0);
     m3g::skin::ThreadPool* pool = parallel ? &m3g::skin::ThreadPool::shared() : nullptr;
     for (auto _ : state) {
         roof.frame(pool);
@@ -114,14 +115,14 @@ void BM_SkinStreamRoof(benchmark::State& state) {
         benchmark::ClobberMemory();
     }
     state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * v));
-    state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * v * m3gbench::SkinStreamRoof::kBytesPerVertex));
+    state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * v * roof.bytesPerVertex()));
     state.counters["per_vertex"] =
         benchmark::Counter(static_cast<double>(v), benchmark::Counter::kIsIterationInvariantRate |
                                                        benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_SkinStreamRoof)
-    ->ArgNames({"vertices", "parallel"})
-    ->ArgsProduct({{100, 350, 500, 1200, 10000, 100000, 1000000}, {0, 1}})
+    ->ArgNames({"vertices", "parallel", "tables"})
+    ->ArgsProduct({{100, 350, 500, 1200, 10000, 100000, 1000000}, {0, 1}, {0, 1}})
     ->Unit(benchmark::kMicrosecond)
     ->UseRealTime();
 
