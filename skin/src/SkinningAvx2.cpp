@@ -423,19 +423,38 @@ M3G_AVX2_INLINE __m256 rowTimes(const Rows& m, int r, __m256 a, __m256 b, __m256
     return _mm256_fmadd_ps(m[4 * r + 2], c, _mm256_fmadd_ps(m[4 * r + 1], b, first));
 }
 
+/// The blended position rows (P0 | P1 in y0, P2 in y1's low half) with the
+/// job's position scale and bias folded in, so that the block loop applies
+/// them to the raw inputs: P (s p + b) = (P s) p + (P b), row by row
+/// (r0 s, r1 s, r2 s, r0 b0 + r1 b1 + r2 b2 + r3). Once per shared set of
+/// influences, not per block.
+/// y * s, plus y . (b, 0) (per 128-bit half) in the elements of WMask.
+template <int WMask>
+M3G_AVX2_INLINE __m256 foldRows(__m256 y, __m256 s, __m256 bias) noexcept {
+    const __m256 d = _mm256_mul_ps(y, bias);
+    const __m256 d2 = _mm256_add_ps(d, _mm256_permute_ps(d, _MM_SHUFFLE(1, 0, 3, 2)));
+    const __m256 dot = _mm256_add_ps(d2, _mm256_permute_ps(d2, _MM_SHUFFLE(2, 3, 0, 1)));
+    return _mm256_add_ps(_mm256_mul_ps(y, s), _mm256_blend_ps(_mm256_setzero_ps(), dot, WMask));
+}
+
+M3G_AVX2_INLINE void foldScaleBias(const BlockContext& c, __m256& y0, __m256& y1) noexcept {
+    const __m256 one = _mm256_set1_ps(1.0f);
+    const __m256 scale = _mm256_blend_ps(c.scale, one, 0x88);                // s s s 1 | s s s 1
+    const __m256 bias = _mm256_blend_ps(c.bias, _mm256_setzero_ps(), 0x88);  // bx by bz 0 | bx by bz 0
+    y0 = foldRows<0x88>(y0, scale, bias);
+    // y1: P2 | N0; the normal row keeps its values (scale 1, nothing added).
+    y1 = foldRows<0x08>(y1, _mm256_blend_ps(scale, one, 0xF0), bias);
+}
+
 /// Eight vertices sharing one set of influences (the common case:
 /// SkinnedMesh::addTransform gives runs of vertices the same bones and
-/// weights), inputs as eight lanes of x, y, z: the rows, blended once, are
-/// applied with FMAs (the result may differ from skinBlock's in the last
-/// bit; a vertex's block or run, not the chunking, decides which runs).
+/// weights), inputs as eight lanes of x, y, z: the rows, blended once and
+/// with the scale and bias folded in (foldScaleBias), are applied with
+/// FMAs (the result may differ from skinBlock's in the last bits; a
+/// vertex's block or run, not the chunking, decides which runs).
 template <class Rows>
-M3G_AVX2_INLINE Block skinUniform(const BlockContext& c, const Rows& m, __m256 px, __m256 py, __m256 pz, __m256 nx,
-                                  __m256 ny, __m256 nz) noexcept {
-    const float s = c.scale[0];
-    const __m256 scale = _mm256_set1_ps(s);
-    px = _mm256_fmadd_ps(px, scale, _mm256_set1_ps(c.bias[0]));
-    py = _mm256_fmadd_ps(py, scale, _mm256_set1_ps(c.bias[1]));
-    pz = _mm256_fmadd_ps(pz, scale, _mm256_set1_ps(c.bias[2]));
+M3G_AVX2_INLINE Block skinUniform(const Rows& m, __m256 px, __m256 py, __m256 pz, __m256 nx, __m256 ny,
+                                  __m256 nz) noexcept {
     Block o;
     o.x = rowTimes<true>(m, 0, px, py, pz);
     o.y = rowTimes<true>(m, 1, px, py, pz);
@@ -452,11 +471,11 @@ M3G_AVX2_INLINE Block skinUniform(const BlockContext& c, const Rows& m, __m256 p
 
 /// The same from eight consecutive packed xyz triples at p and n.
 template <class Rows>
-M3G_AVX2_INLINE Block skinUniform(const BlockContext& c, const Rows& m, const float* p, const float* n) noexcept {
+M3G_AVX2_INLINE Block skinUniform(const Rows& m, const float* p, const float* n) noexcept {
     __m256 px, py, pz, nx, ny, nz;
     loadSoa3(p, px, py, pz);
     loadSoa3(n, nx, ny, nz);
-    return skinUniform(c, m, px, py, pz, nx, ny, nz);
+    return skinUniform(m, px, py, pz, nx, ny, nz);
 }
 
 /// xyz of vertices first .. first+lanes-1 (lanes 1..8; the last repeated in
@@ -588,10 +607,11 @@ M3G_AVX2 void skinBlocks(const SkinningJob& j, std::size_t begin, std::size_t en
             const bool fullSlots = stride == 4 && v0 + 8 <= tableVertices;
             if (fullSlots && shared && sameInfluences(b0, w0, sharedB, sharedW)) {
                 bad = sharedBad;
-                o = skinUniform(c, uniform, p0, n0);
+                o = skinUniform(uniform, p0, n0);
             } else if (fullSlots && sameInfluences(b0, w0, b0, w0)) {
                 __m256 y0, y1, y2;
                 blendRows<K>(c, b0, w0, y0, y1, y2, bad);
+                foldScaleBias(c, y0, y1);
                 _mm256_store_ps(rows, y0);
                 _mm256_store_ps(rows + 8, y1);
                 _mm256_store_ps(rows + 16, y2);
@@ -600,7 +620,7 @@ M3G_AVX2 void skinBlocks(const SkinningJob& j, std::size_t begin, std::size_t en
                 sharedB = b0;
                 sharedW = w0;
                 sharedBad = bad;
-                o = skinUniform(c, uniform, p0, n0);
+                o = skinUniform(uniform, p0, n0);
             } else {
                 o = skinBlock<K, true>(
                     c,
@@ -672,7 +692,7 @@ M3G_AVX2_INLINE void skinRunRows(const SkinningJob& j, const BlockContext& c, bo
         // loadSoa3 reads exactly the eight vertices' 24 floats.
         const std::size_t direct = end < j.vertexCount ? end : j.vertexCount;
         for (; v + 8 <= direct; v += 8) {
-            const Block o = skinUniform(c, rows, c.inP + v * 3, c.inN + v * 3);
+            const Block o = skinUniform(rows, c.inP + v * 3, c.inN + v * 3);
             storeSoa3(outP + v * 3, o.x, o.y, o.z);
             storeSoa3(outN + v * 3, o.nx, o.ny, o.nz);
         }
@@ -682,7 +702,7 @@ M3G_AVX2_INLINE void skinRunRows(const SkinningJob& j, const BlockContext& c, bo
         __m256 px, py, pz, nx, ny, nz;
         gatherSoa3(c.inP, c.inPs, c.safeP, v, lanes, px, py, pz);
         gatherSoa3(c.inN, c.inNs, c.safeN, v, lanes, nx, ny, nz);
-        const Block o = skinUniform(c, rows, px, py, pz, nx, ny, nz);
+        const Block o = skinUniform(rows, px, py, pz, nx, ny, nz);
         scatterSoa3(outP, j.outPositionStride, v, lanes, o.x, o.y, o.z);
         scatterSoa3(outN, j.outNormalStride, v, lanes, o.nx, o.ny, o.nz);
         v += lanes;
@@ -702,6 +722,7 @@ M3G_AVX2_INLINE void skinRun(const SkinningJob& j, const BlockContext& c, bool p
         for (std::size_t i = 0; i < count; ++i) skinVertexChecked(j, v + i);
         return;
     }
+    foldScaleBias(c, y0, y1);
     alignas(32) float rows[24];
     _mm256_store_ps(rows, y0);
     _mm256_store_ps(rows + 8, y1);
