@@ -11,6 +11,8 @@
 #include <string_view>
 #include <vector>
 
+#include "HostHeap.h"
+
 namespace m3g::vk {
 
 namespace {
@@ -348,6 +350,8 @@ Context::Context() {
         vkGetPhysicalDeviceProperties(physical_, &properties_);
         vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
         info_ = describe(physical_);
+        // lavapipe's per-draw vertex storage comes from the host heap (HostHeap.h).
+        if (properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) keepHostHeap();
         if (properties_.apiVersion < VK_API_VERSION_1_3)
             throw VulkanError("m3g-vk: device \"" + info_.name + "\" supports only Vulkan " +
                               std::to_string(VK_API_VERSION_MAJOR(properties_.apiVersion)) + "." +
