@@ -209,9 +209,21 @@ void Renderer::ensureTargetImages(std::uint32_t width, std::uint32_t height, VkS
     ctx_->destroy(msaaColor_);
     ctx_->destroy(initial_);
     samples_ = samples;
-    color_ = ctx_->createImage(width, height, VK_FORMAT_R8G8B8A8_UNORM,
-                               VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                                   VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+    const VkImageUsageFlags colorUsage =
+        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    // On a CPU device the colour target is linear host memory, read back in
+    // place instead of copied into transfer_ first (lavapipe's copy was ~12%
+    // of an empty 1280x960 frame). M3G_VK_HOST_TARGET=0 keeps the copy.
+    const char* hostTarget = std::getenv("M3G_VK_HOST_TARGET");
+    if ((!hostTarget || std::string(hostTarget) != "0") &&
+        ctx_->hostImageUsable(VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT |
+                                                            VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT |
+                                                            VK_FORMAT_FEATURE_TRANSFER_SRC_BIT |
+                                                            VK_FORMAT_FEATURE_TRANSFER_DST_BIT)) {
+        color_ = ctx_->createHostImage(width, height, VK_FORMAT_R8G8B8A8_UNORM, colorUsage);
+        if (color_.rowPitch != static_cast<VkDeviceSize>(width) * 4) ctx_->destroy(color_);  // read as one span only
+    }
+    if (!color_.image) color_ = ctx_->createImage(width, height, VK_FORMAT_R8G8B8A8_UNORM, colorUsage);
     depth_ = ctx_->createImage(width, height, ctx_->depthFormat(), VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, 1, samples);
     if (samples != VK_SAMPLE_COUNT_1_BIT) {
         msaaColor_ = ctx_->createImage(width, height, VK_FORMAT_R8G8B8A8_UNORM, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, 1,
@@ -843,14 +855,22 @@ void Renderer::release(Graphics3D& g3d) {
     openRendering();  // a frame of clears only: their load operation
     vkCmdEndRendering(cmd_);
     const VkImage colorImage = target_->image;
-    barrier(cmd_, colorImage, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-            VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
     // A window reads back only on request (screenshots); other targets always.
     const bool readback = window_ ? window_->takeReadbackRequest() : true;
     // A window screenshot with its overlay reads the swapchain image instead.
     bool readbackBgra = readback && window_ && window_->readbackWithOverlay();
-    if (readback && !readbackBgra) copyToHost(colorImage);
+    // A host image target is read where it is (GENERAL layout for host access).
+    const bool inPlace = !window_ && color_.mapped;
+    if (inPlace) {
+        barrier(cmd_, colorImage, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+    } else {
+        barrier(cmd_, colorImage, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+        if (readback && !readbackBgra) copyToHost(colorImage);
+    }
     const bool presenting = window_ && recordPresent(*window_, readbackBgra);
     if (readbackBgra && !presenting) readbackBgra = false;
     check(vkEndCommandBuffer(cmd_), "vkEndCommandBuffer");
@@ -880,7 +900,7 @@ void Renderer::release(Graphics3D& g3d) {
     if (window_) window_->markReadback();
     // Texels are RGBA, except a swapchain image's (the window with its overlay).
     const bool bgra = readbackBgra && window_->swapchain().format() == VK_FORMAT_B8G8R8A8_UNORM;
-    const auto* src = static_cast<const std::uint8_t*>(transfer_.mapped);
+    const auto* src = static_cast<const std::uint8_t*>(inPlace ? color_.mapped : transfer_.mapped);
     const std::size_t n = static_cast<std::size_t>(width_) * height_;
     if (Image2D* image = g3d.targetImage()) {
         if (image->getFormat() == Image2D::RGBA) {
