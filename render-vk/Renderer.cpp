@@ -123,7 +123,13 @@ PipelineKey pipelineKey(const DrawUniforms& u, const CompositingMode* cm, std::u
     }
     key.fog = u.fogParams[0] != 0.0f ? 1 : 0;
     key.flat = (u.flags[0] & F_FLAT) ? 1 : 0;
-    if (u.flags[0] & F_LIGHTING) key.lighting = (u.flags[0] & F_TWO_SIDED) ? 3 : 1;
+    if (u.flags[0] & F_LIGHTING) {
+        key.lighting = (u.flags[0] & F_TWO_SIDED) ? 3 : 1;
+        key.lightCount = static_cast<std::uint8_t>(u.flags[1]);
+        for (int i = 0; i < u.flags[1]; ++i)
+            key.lightModes = static_cast<std::uint16_t>(key.lightModes | (static_cast<int>(u.lights[i].color[3]) << (2 * i)));
+        key.specular = (u.matSpecular[0] != 0.0f || u.matSpecular[1] != 0.0f || u.matSpecular[2] != 0.0f) ? 1 : 0;
+    }
     return key;
 }
 

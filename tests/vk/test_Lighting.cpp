@@ -343,6 +343,50 @@ TEST_F(VkTest, LightingEightLights) {
     expectGolden(*img, "lighting_eight_lights", 3, 0.0);
 }
 
+TEST_F(VkTest, LightingMixedModesInOneDraw) {
+    // Four lights of four modes in one draw, in two orders (each light's
+    // mode is compiled into the pipeline by its index, PipelineKey): a red
+    // spot (intensity 0.5) and a green omni 0.5 above the quadrant's centre,
+    // a blue ambient light (0.25) and a red directional one at 60 degrees
+    // (intensity 0.5). Every corner sees the point lights at
+    // cos = 0.5 / sqrt(0.75) (inside the 60-degree cone), so
+    // red = 0.5 cos + 0.5 cos 60, green = cos, blue = 0.25.
+    auto img = target(64, 64);
+    Ref<Camera> cam(new Camera());
+    Graphics3D* g = begin(img.get(), cam.get());
+    g->clear(nullptr);
+    auto app = appearance(material(0xFFFFFF, 0xFFFFFFFF).get());
+    Ref<Light> spot = light(Light::SPOT, 0xFF0000, 0.5f);
+    spot->setSpotAngle(60);
+    Ref<Light> omni = light(Light::OMNI, 0x00FF00);
+    Ref<Light> ambient = light(Light::AMBIENT, 0x0000FF, 0.25f);
+    Ref<Light> directional = light(Light::DIRECTIONAL, 0xFF0000, 0.5f);
+    const Transform slant = rotX(60);
+    for (int q : {0, 3}) {
+        g->resetLights();
+        const Transform above = m3gtest::translation(kNdcX[q], kNdcY[q], 0.5f);
+        if (q == 0) {
+            g->addLight(spot.get(), &above);
+            g->addLight(ambient.get(), nullptr);
+            g->addLight(omni.get(), &above);
+            g->addLight(directional.get(), &slant);
+        } else {
+            g->addLight(directional.get(), &slant);
+            g->addLight(omni.get(), &above);
+            g->addLight(ambient.get(), nullptr);
+            g->addLight(spot.get(), &above);
+        }
+        Quad quad = quadrant(q);
+        g->render(quad.vb.get(), quad.ib.get(), app.get(), nullptr);
+    }
+    g->releaseTarget();
+    const double cosT = 0.5 / std::sqrt(0.75);
+    const Rgba want{level(0.5 * cosT + 0.5 * kCos60), level(cosT), level(0.25), 255};  // 137, 147, 64
+    EXPECT_PIXEL(*img, kCentreX[0], kCentreY[0], want);
+    EXPECT_PIXEL(*img, kCentreX[3], kCentreY[3], want);
+    EXPECT_PIXEL(*img, kCentreX[1], kCentreY[1], Rgba{0, 0, 0, -1});  // not drawn: the clear
+}
+
 TEST_F(VkTest, LightingRenormalisedNormals) {
     // Normals are renormalised after the inverse-transpose transform: short
     // normals under a uniform scale still give N.L = 1; a tilted normal
