@@ -101,11 +101,12 @@ VkPipeline Pipelines::create(const PipelineKey& key) {
     const VkSpecializationInfo vertSpec{static_cast<std::uint32_t>(vertexEntries.size()), vertexEntries.data(),
                                         sizeof(vertexFeatures), vertexFeatures.data()};
     stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, vert_, "main", &vertSpec};
-    // m3g.frag's constant_ids 0..7 (all 32-bit).
-    const std::array<std::uint32_t, 8> features{key.discard,      key.texFunc[0], key.texFunc[1],
-                                                key.fog,          key.texFormat[0], key.texFormat[1],
-                                                key.flat,         (key.lighting & 2u) ? 1u : 0u};
-    std::array<VkSpecializationMapEntry, 8> entries{};
+    // m3g.frag's constant_ids 0..9 (all 32-bit).
+    const std::array<std::uint32_t, 10> features{key.discard,      key.texFunc[0],       key.texFunc[1],
+                                                 key.fog,          key.texFormat[0],     key.texFormat[1],
+                                                 key.flat,         (key.lighting & 2u) ? 1u : 0u,
+                                                 key.texProjective[0], key.texProjective[1]};
+    std::array<VkSpecializationMapEntry, 10> entries{};
     for (std::uint32_t i = 0; i < entries.size(); ++i)
         entries[i] = {i, static_cast<std::uint32_t>(i * sizeof(std::uint32_t)), sizeof(std::uint32_t)};
     const VkSpecializationInfo fragSpec{static_cast<std::uint32_t>(entries.size()), entries.data(), sizeof(features),

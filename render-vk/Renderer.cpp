@@ -120,6 +120,10 @@ PipelineKey pipelineKey(const DrawUniforms& u, const CompositingMode* cm, std::u
     for (int unit = 0; unit < 2; ++unit) {
         key.texFunc[unit] = static_cast<std::uint8_t>(u.texEnv[unit][0]);
         key.texFormat[unit] = static_cast<std::uint8_t>((u.texEnv[unit][1] ? 1 : 0) | (u.texEnv[unit][2] ? 2 : 0));
+        // Column-major: the bottom row is elements 3, 7, 11, 15.
+        const float* m = u.texMatrix[unit];
+        const bool affine = m[3] == 0.0f && m[7] == 0.0f && m[11] == 0.0f && m[15] == 1.0f;
+        key.texProjective[unit] = key.texFunc[unit] != 0 && !affine ? 1 : 0;
     }
     key.fog = u.fogParams[0] != 0.0f ? 1 : 0;
     key.flat = (u.flags[0] & F_FLAT) ? 1 : 0;
