@@ -91,11 +91,19 @@ void Pipelines::prewarm(std::uint8_t samples) {
 
 VkPipeline Pipelines::create(const PipelineKey& key) {
     std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
-    // m3g.vert's constant_ids 0..4: LIGHTING, TWO_SIDED, LIGHT_COUNT,
-    // LIGHT_MODES, SPECULAR (all 32-bit; VkBool32 for the booleans).
-    const std::array<std::uint32_t, 5> vertexFeatures{(key.lighting & 1u) ? 1u : 0u, (key.lighting & 2u) ? 1u : 0u,
-                                                      key.lightCount, key.lightModes, key.specular};
-    std::array<VkSpecializationMapEntry, 5> vertexEntries{};
+    // m3g.vert's constant_ids 0..8: LIGHTING, TWO_SIDED, LIGHT_COUNT,
+    // LIGHT_MODES, SPECULAR, then the outputs m3g.frag reads: TEX0_USED,
+    // TEX1_USED, FOG_USED, FLAT (all 32-bit; VkBool32 for the booleans).
+    const std::array<std::uint32_t, 9> vertexFeatures{(key.lighting & 1u) ? 1u : 0u,
+                                                      (key.lighting & 2u) ? 1u : 0u,
+                                                      key.lightCount,
+                                                      key.lightModes,
+                                                      key.specular,
+                                                      key.texFunc[0] != 0 ? 1u : 0u,
+                                                      key.texFunc[1] != 0 ? 1u : 0u,
+                                                      key.fog,
+                                                      key.flat};
+    std::array<VkSpecializationMapEntry, 9> vertexEntries{};
     for (std::uint32_t i = 0; i < vertexEntries.size(); ++i)
         vertexEntries[i] = {i, static_cast<std::uint32_t>(i * sizeof(std::uint32_t)), sizeof(std::uint32_t)};
     const VkSpecializationInfo vertSpec{static_cast<std::uint32_t>(vertexEntries.size()), vertexEntries.data(),

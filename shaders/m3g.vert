@@ -30,6 +30,13 @@ layout(constant_id = 2) const int LIGHT_COUNT = 0;
 layout(constant_id = 3) const int LIGHT_MODES = 0;
 // The material's specular colour is not black.
 layout(constant_id = 4) const bool SPECULAR = true;
+// The outputs m3g.frag reads (its TEX0, TEX1 != 0, FOG, FLAT): the others
+// are not written, so that llvmpipe's vertex stage neither computes nor
+// stores them.
+layout(constant_id = 5) const bool TEX0_USED = true;
+layout(constant_id = 6) const bool TEX1_USED = true;
+layout(constant_id = 7) const bool FOG_USED = true;
+layout(constant_id = 8) const bool FLAT = false;
 
 bool has(int bit) { return (u.flags.x & bit) != 0; }
 
@@ -118,11 +125,14 @@ void main() {
     }
     front.a *= u.misc.x;
     back.a *= u.misc.x;
-    outFront = front;
-    outBack = back;
-    outFlatFront = front;
-    outFlatBack = back;
-    outTex0 = u.texEnv[0].x != 0 ? texCoord(inTex0, 0) : vec4(0.0, 0.0, 0.0, 1.0);
-    outTex1 = u.texEnv[1].x != 0 ? texCoord(inTex1, 1) : vec4(0.0, 0.0, 0.0, 1.0);
-    outFogDepth = u.misc.z >= 0.0 ? u.misc.z : abs(eye.z / eye.w);
+    if (FLAT) {
+        outFlatFront = front;
+        if (TWO_SIDED) outFlatBack = back;
+    } else {
+        outFront = front;
+        if (TWO_SIDED) outBack = back;
+    }
+    if (TEX0_USED) outTex0 = texCoord(inTex0, 0);
+    if (TEX1_USED) outTex1 = texCoord(inTex1, 1);
+    if (FOG_USED) outFogDepth = u.misc.z >= 0.0 ? u.misc.z : abs(eye.z / eye.w);
 }

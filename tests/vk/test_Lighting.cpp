@@ -275,6 +275,43 @@ TEST_F(VkTest, LightingTwoSided) {
     expectGolden(*img, "lighting_two_sided", 3, 0.0);
 }
 
+TEST_F(VkTest, LightingTwoSidedFlat) {
+    // LightingTwoSided's four cases with SHADE_FLAT: the colours come from
+    // the flat outputs (m3g.vert writes only the outputs m3g.frag reads:
+    // flat front and back here), with the same hand values since the
+    // normals are uniform.
+    auto img = target(64, 64);
+    Ref<Camera> cam(new Camera());
+    Graphics3D* g = begin(img.get(), cam.get());
+    g->clear(nullptr);
+    Ref<Light> behind = light(Light::DIRECTIONAL);
+    Ref<Light> front = light(Light::DIRECTIONAL);
+    const Transform flip = rotX(180);
+    auto mat = material(0x000000, 0xFFCCCCCC);
+    const int winding[4] = {PolygonMode::WINDING_CW, PolygonMode::WINDING_CW, PolygonMode::WINDING_CCW,
+                            PolygonMode::WINDING_CW};
+    const bool twoSided[4] = {false, true, true, true}, lightBehind[4] = {true, true, true, false};
+    const double expected[4] = {0.0, 0.8, 0.0, 0.0};
+    for (int q = 0; q < 4; ++q) {
+        Ref<PolygonMode> pm(new PolygonMode());
+        pm->setCulling(PolygonMode::CULL_NONE);
+        pm->setShading(PolygonMode::SHADE_FLAT);
+        pm->setWinding(winding[q]);
+        pm->setTwoSidedLightingEnable(twoSided[q]);
+        g->resetLights();
+        if (lightBehind[q]) g->addLight(behind.get(), &flip);
+        else g->addLight(front.get(), nullptr);
+        Quad quad = quadrant(q);
+        g->render(quad.vb.get(), quad.ib.get(), appearance(mat.get(), pm.get()).get(), nullptr);
+    }
+    g->releaseTarget();
+    for (int q = 0; q < 4; ++q) {
+        SCOPED_TRACE(q);
+        EXPECT_PIXEL(*img, kCentreX[q], kCentreY[q], grey(expected[q], 255));
+        EXPECT_PIXEL(*img, kCentreX[q] - 12, kCentreY[q] + 12, grey(expected[q], 255));
+    }
+}
+
 TEST_F(VkTest, LightingScopeInWorld) {
     // Light scope against mesh scope (not the camera's): white light scope 2,
     // red light scope 4; meshes with scope 1, 2 and 6. A third light (scope
