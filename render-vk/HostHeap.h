@@ -3,8 +3,8 @@
 // frees it after the draw: megabytes per frame for a 16k-vertex mesh. glibc's
 // default policy gives such memory back to the kernel at every free
 // (madvise of the thread heap's top, or munmap), so the next frame faults
-// every page in again, zero-filled by the kernel: measured 35% of
-// midpath robot.m3g's frame at 320x240 (9.0 -> 5.6 ms).
+// every page in again, zero-filled by the kernel: a third of midpath
+// robot.m3g's frame at 320x240 (A/B: 8.7 -> 5.8 ms median).
 #pragma once
 
 namespace m3g::vk {
