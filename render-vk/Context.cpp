@@ -11,6 +11,8 @@
 #include <string_view>
 #include <vector>
 
+#include "HostHeap.h"
+
 namespace m3g::vk {
 
 namespace {
@@ -348,6 +350,8 @@ Context::Context() {
         vkGetPhysicalDeviceProperties(physical_, &properties_);
         vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
         info_ = describe(physical_);
+        // lavapipe's per-draw vertex storage comes from the host heap (HostHeap.h).
+        if (properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) keepHostHeap();
         if (properties_.apiVersion < VK_API_VERSION_1_3)
             throw VulkanError("m3g-vk: device \"" + info_.name + "\" supports only Vulkan " +
                               std::to_string(VK_API_VERSION_MAJOR(properties_.apiVersion)) + "." +
@@ -514,6 +518,22 @@ void Context::destroy(Buffer& b) noexcept {
 
 Image Context::createImage(std::uint32_t width, std::uint32_t height, VkFormat format, VkImageUsageFlags usage,
                            std::uint32_t mipLevels, VkSampleCountFlagBits samples) {
+    return makeImage(width, height, format, usage, mipLevels, samples, false);
+}
+
+Image Context::createHostImage(std::uint32_t width, std::uint32_t height, VkFormat format, VkImageUsageFlags usage) {
+    return makeImage(width, height, format, usage, 1, VK_SAMPLE_COUNT_1_BIT, true);
+}
+
+bool Context::hostImageUsable(VkFormat format, VkFormatFeatureFlags features) const {
+    if (properties_.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU) return false;
+    VkFormatProperties fp;
+    vkGetPhysicalDeviceFormatProperties(physical_, format, &fp);
+    return (fp.linearTilingFeatures & features) == features;
+}
+
+Image Context::makeImage(std::uint32_t width, std::uint32_t height, VkFormat format, VkImageUsageFlags usage,
+                         std::uint32_t mipLevels, VkSampleCountFlagBits samples, bool host) {
     Image img;
     img.format = format;
     img.width = width;
@@ -526,7 +546,7 @@ Image Context::createImage(std::uint32_t width, std::uint32_t height, VkFormat f
     ii.mipLevels = mipLevels;
     ii.arrayLayers = 1;
     ii.samples = samples;
-    ii.tiling = VK_IMAGE_TILING_OPTIMAL;
+    ii.tiling = host ? VK_IMAGE_TILING_LINEAR : VK_IMAGE_TILING_OPTIMAL;
     ii.usage = usage;
     ii.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
     check(vkCreateImage(device_, &ii, nullptr, &img.image), "vkCreateImage");
@@ -534,13 +554,30 @@ Image Context::createImage(std::uint32_t width, std::uint32_t height, VkFormat f
     vkGetImageMemoryRequirements(device_, img.image, &req);
     VkMemoryAllocateInfo ai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     ai.allocationSize = req.size;
-    ai.memoryTypeIndex = memoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0);
-    VkResult r = vkAllocateMemory(device_, &ai, nullptr, &img.memory);
+    const VkMemoryPropertyFlags hostFlags = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    VkResult r = VK_ERROR_OUT_OF_DEVICE_MEMORY;
+    try {
+        ai.memoryTypeIndex = host ? memoryType(req.memoryTypeBits, hostFlags, hostFlags)
+                                  : memoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0);
+        r = vkAllocateMemory(device_, &ai, nullptr, &img.memory);
+    } catch (...) {
+        vkDestroyImage(device_, img.image, nullptr);
+        throw;
+    }
     if (r != VK_SUCCESS) {
         vkDestroyImage(device_, img.image, nullptr);
         check(r, "vkAllocateMemory (image)");
     }
     vkBindImageMemory(device_, img.image, img.memory, 0);
+    if (host) {
+        const VkImageSubresource sub{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0};
+        VkSubresourceLayout layout;
+        vkGetImageSubresourceLayout(device_, img.image, &sub, &layout);
+        img.rowPitch = layout.rowPitch;
+        void* base = nullptr;
+        check(vkMapMemory(device_, img.memory, 0, VK_WHOLE_SIZE, 0, &base), "vkMapMemory (image)");
+        img.mapped = static_cast<char*>(base) + layout.offset;
+    }
     const bool depth = format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D16_UNORM;
     VkImageViewCreateInfo vi{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     vi.image = img.image;

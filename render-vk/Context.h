@@ -52,6 +52,8 @@ struct Image {
     VkFormat format = VK_FORMAT_UNDEFINED;
     std::uint32_t width = 0, height = 0, mipLevels = 1;
     VkDeviceSize bytes = 0;
+    void* mapped = nullptr;     ///< createHostImage: the texels, rows rowPitch bytes apart
+    VkDeviceSize rowPitch = 0;  ///< createHostImage only
 };
 
 class Context {
@@ -81,6 +83,14 @@ public:
     /// Device-local 2D image with a view (colour or depth aspect by format).
     Image createImage(std::uint32_t width, std::uint32_t height, VkFormat format, VkImageUsageFlags usage,
                       std::uint32_t mipLevels = 1, VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT);
+    /// A single-sampled 2D image with linear tiling in host-visible,
+    /// coherent memory, persistently mapped (Image::mapped, rowPitch), for
+    /// `usage`; only where hostImageUsable(format, features) is true.
+    Image createHostImage(std::uint32_t width, std::uint32_t height, VkFormat format, VkImageUsageFlags usage);
+    /// Whether a linear image of `format` supports `features` and is worth
+    /// using as a render target read by the host: CPU devices only (on a
+    /// GPU, rendering to linear memory is slow or unsupported).
+    bool hostImageUsable(VkFormat format, VkFormatFeatureFlags features) const;
     void destroy(Image& image) noexcept;
 
     /// Records `record` into a one-shot command buffer of the shared pool,
@@ -127,6 +137,9 @@ public:
 private:
     Context();
     std::uint32_t memoryType(std::uint32_t bits, VkMemoryPropertyFlags want, VkMemoryPropertyFlags fallback) const;
+    /// createImage and createHostImage: the image, its memory and its view.
+    Image makeImage(std::uint32_t width, std::uint32_t height, VkFormat format, VkImageUsageFlags usage,
+                    std::uint32_t mipLevels, VkSampleCountFlagBits samples, bool host);
 
     VkInstance instance_ = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;

@@ -91,18 +91,30 @@ void Pipelines::prewarm(std::uint8_t samples) {
 
 VkPipeline Pipelines::create(const PipelineKey& key) {
     std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
-    // m3g.vert's constant_ids 0..1: LIGHTING, TWO_SIDED.
-    const std::array<VkBool32, 2> vertexFeatures{(key.lighting & 1) ? VK_TRUE : VK_FALSE,
-                                                 (key.lighting & 2) ? VK_TRUE : VK_FALSE};
-    const std::array<VkSpecializationMapEntry, 2> vertexEntries{
-        VkSpecializationMapEntry{0, 0, sizeof(VkBool32)}, VkSpecializationMapEntry{1, sizeof(VkBool32), sizeof(VkBool32)}};
-    const VkSpecializationInfo vertSpec{2, vertexEntries.data(), sizeof(vertexFeatures), vertexFeatures.data()};
+    // m3g.vert's constant_ids 0..8: LIGHTING, TWO_SIDED, LIGHT_COUNT,
+    // LIGHT_MODES, SPECULAR, then the outputs m3g.frag reads: TEX0_USED,
+    // TEX1_USED, FOG_USED, FLAT (all 32-bit; VkBool32 for the booleans).
+    const std::array<std::uint32_t, 9> vertexFeatures{(key.lighting & 1u) ? 1u : 0u,
+                                                      (key.lighting & 2u) ? 1u : 0u,
+                                                      key.lightCount,
+                                                      key.lightModes,
+                                                      key.specular,
+                                                      key.texFunc[0] != 0 ? 1u : 0u,
+                                                      key.texFunc[1] != 0 ? 1u : 0u,
+                                                      key.fog,
+                                                      key.flat};
+    std::array<VkSpecializationMapEntry, 9> vertexEntries{};
+    for (std::uint32_t i = 0; i < vertexEntries.size(); ++i)
+        vertexEntries[i] = {i, static_cast<std::uint32_t>(i * sizeof(std::uint32_t)), sizeof(std::uint32_t)};
+    const VkSpecializationInfo vertSpec{static_cast<std::uint32_t>(vertexEntries.size()), vertexEntries.data(),
+                                        sizeof(vertexFeatures), vertexFeatures.data()};
     stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, vert_, "main", &vertSpec};
-    // m3g.frag's constant_ids 0..7 (all 32-bit).
-    const std::array<std::uint32_t, 8> features{key.discard,      key.texFunc[0], key.texFunc[1],
-                                                key.fog,          key.texFormat[0], key.texFormat[1],
-                                                key.flat,         (key.lighting & 2u) ? 1u : 0u};
-    std::array<VkSpecializationMapEntry, 8> entries{};
+    // m3g.frag's constant_ids 0..9 (all 32-bit).
+    const std::array<std::uint32_t, 10> features{key.discard,      key.texFunc[0],       key.texFunc[1],
+                                                 key.fog,          key.texFormat[0],     key.texFormat[1],
+                                                 key.flat,         (key.lighting & 2u) ? 1u : 0u,
+                                                 key.texProjective[0], key.texProjective[1]};
+    std::array<VkSpecializationMapEntry, 10> entries{};
     for (std::uint32_t i = 0; i < entries.size(); ++i)
         entries[i] = {i, static_cast<std::uint32_t>(i * sizeof(std::uint32_t)), sizeof(std::uint32_t)};
     const VkSpecializationInfo fragSpec{static_cast<std::uint32_t>(entries.size()), entries.data(), sizeof(features),

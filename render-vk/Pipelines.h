@@ -27,16 +27,28 @@ struct PipelineKey {
     /// its image's channels (bit 0 colour, bit 1 alpha).
     std::uint8_t texFunc[2] = {0, 0};
     std::uint8_t texFormat[2] = {0, 0};
+    /// Per texture unit, 1: the texture matrix is projective (bottom row not
+    /// 0, 0, 0, 1), so the fragment shader divides s and t by q.
+    std::uint8_t texProjective[2] = {0, 0};
     std::uint8_t fog = 0;   ///< 1: fog applied
     std::uint8_t flat = 0;  ///< 1: SHADE_FLAT
     /// Bit 0 lighting, bit 1 two-sided lighting (m3g.vert, and m3g.frag's
     /// choice of back-face colours).
     std::uint8_t lighting = 0;
+    /// With lighting, m3g.vert's lights: how many (0..8), each one's mode
+    /// (light i in bits 2i..2i+1: 0 ambient, 1 directional, 2 omni, 3 spot)
+    /// and whether the material's specular colour is not black. A light's
+    /// mode is compiled in instead of branched on (llvmpipe ran every mode's
+    /// code for every light: the vertex stage of midpath robot.m3g).
+    std::uint8_t lightCount = 0;
+    std::uint16_t lightModes = 0;
+    std::uint8_t specular = 0;
     std::uint64_t packed() const noexcept {
         auto at = [](std::uint64_t v, int bit) { return v << bit; };
         return at(blend, 0) | at(writeMask, 4) | at(samples, 8) | at(wireframe, 16) | at(discard, 17) |
                at(texFunc[0], 18) | at(texFunc[1], 21) | at(texFormat[0], 24) | at(texFormat[1], 26) | at(fog, 28) |
-               at(flat, 29) | at(lighting, 30);
+               at(flat, 29) | at(lighting, 30) | at(lightCount, 32) | at(lightModes, 36) | at(specular, 52) |
+               at(texProjective[0], 53) | at(texProjective[1], 54);
     }
 };
 

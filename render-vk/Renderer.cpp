@@ -120,10 +120,20 @@ PipelineKey pipelineKey(const DrawUniforms& u, const CompositingMode* cm, std::u
     for (int unit = 0; unit < 2; ++unit) {
         key.texFunc[unit] = static_cast<std::uint8_t>(u.texEnv[unit][0]);
         key.texFormat[unit] = static_cast<std::uint8_t>((u.texEnv[unit][1] ? 1 : 0) | (u.texEnv[unit][2] ? 2 : 0));
+        // Column-major: the bottom row is elements 3, 7, 11, 15.
+        const float* m = u.texMatrix[unit];
+        const bool affine = m[3] == 0.0f && m[7] == 0.0f && m[11] == 0.0f && m[15] == 1.0f;
+        key.texProjective[unit] = key.texFunc[unit] != 0 && !affine ? 1 : 0;
     }
     key.fog = u.fogParams[0] != 0.0f ? 1 : 0;
     key.flat = (u.flags[0] & F_FLAT) ? 1 : 0;
-    if (u.flags[0] & F_LIGHTING) key.lighting = (u.flags[0] & F_TWO_SIDED) ? 3 : 1;
+    if (u.flags[0] & F_LIGHTING) {
+        key.lighting = (u.flags[0] & F_TWO_SIDED) ? 3 : 1;
+        key.lightCount = static_cast<std::uint8_t>(u.flags[1]);
+        for (int i = 0; i < u.flags[1]; ++i)
+            key.lightModes = static_cast<std::uint16_t>(key.lightModes | (static_cast<int>(u.lights[i].color[3]) << (2 * i)));
+        key.specular = (u.matSpecular[0] != 0.0f || u.matSpecular[1] != 0.0f || u.matSpecular[2] != 0.0f) ? 1 : 0;
+    }
     return key;
 }
 
@@ -209,9 +219,21 @@ void Renderer::ensureTargetImages(std::uint32_t width, std::uint32_t height, VkS
     ctx_->destroy(msaaColor_);
     ctx_->destroy(initial_);
     samples_ = samples;
-    color_ = ctx_->createImage(width, height, VK_FORMAT_R8G8B8A8_UNORM,
-                               VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                                   VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+    const VkImageUsageFlags colorUsage =
+        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    // On a CPU device the colour target is linear host memory, read back in
+    // place instead of copied into transfer_ first (lavapipe's copy was ~12%
+    // of an empty 1280x960 frame). M3G_VK_HOST_TARGET=0 keeps the copy.
+    const char* hostTarget = std::getenv("M3G_VK_HOST_TARGET");
+    if ((!hostTarget || std::string(hostTarget) != "0") &&
+        ctx_->hostImageUsable(VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT |
+                                                            VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT |
+                                                            VK_FORMAT_FEATURE_TRANSFER_SRC_BIT |
+                                                            VK_FORMAT_FEATURE_TRANSFER_DST_BIT)) {
+        color_ = ctx_->createHostImage(width, height, VK_FORMAT_R8G8B8A8_UNORM, colorUsage);
+        if (color_.rowPitch != static_cast<VkDeviceSize>(width) * 4) ctx_->destroy(color_);  // read as one span only
+    }
+    if (!color_.image) color_ = ctx_->createImage(width, height, VK_FORMAT_R8G8B8A8_UNORM, colorUsage);
     depth_ = ctx_->createImage(width, height, ctx_->depthFormat(), VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, 1, samples);
     if (samples != VK_SAMPLE_COUNT_1_BIT) {
         msaaColor_ = ctx_->createImage(width, height, VK_FORMAT_R8G8B8A8_UNORM, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, 1,
@@ -225,7 +247,7 @@ void Renderer::ensureTargetImages(std::uint32_t width, std::uint32_t height, VkS
     height_ = height;
 }
 
-void Renderer::begin(Graphics3D& g3d, bool coveredByClear) {
+void Renderer::begin(Graphics3D& g3d, const float* clearColor, bool covered) {
     if (recording_) return;
     debug_ = debugView();
     clampLit_ = litColorClamping();
@@ -243,7 +265,7 @@ void Renderer::begin(Graphics3D& g3d, bool coveredByClear) {
     target_ = &color_;
     // A first command that clears every pixel makes the prior contents moot.
     enum class Prior { None, Upload, Keep, Black } prior =
-        overwrite || coveredByClear ? Prior::None : Prior::Upload;
+        overwrite || clearColor || covered ? Prior::None : Prior::Upload;
     if (window_) {
         bool created = false;
         target_ = &window_->swapchain().back(w, h, created);
@@ -331,38 +353,55 @@ void Renderer::begin(Graphics3D& g3d, bool coveredByClear) {
             VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
             VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
 
-    VkRenderingAttachmentInfo colorAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    // The rendering itself opens at the first command that needs it
+    // (openRendering): a clear of the whole target before it becomes the
+    // colour attachment's load operation.
+    VkRenderingAttachmentInfo& colorAttachment = colorAttachment_;
+    colorAttachment = {VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     colorAttachment.imageView = msaa ? msaaColor_.view : target_->view;
     colorAttachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    colorAttachment.loadOp = prior == Prior::Black                      ? VK_ATTACHMENT_LOAD_OP_CLEAR
-                             : (prior == Prior::None || msaa)           ? VK_ATTACHMENT_LOAD_OP_DONT_CARE
-                                                                        : VK_ATTACHMENT_LOAD_OP_LOAD;
+    colorAttachment.loadOp = (prior == Prior::Black || clearColor) ? VK_ATTACHMENT_LOAD_OP_CLEAR
+                             : (prior == Prior::None || msaa)      ? VK_ATTACHMENT_LOAD_OP_DONT_CARE
+                                                                   : VK_ATTACHMENT_LOAD_OP_LOAD;
     colorAttachment.clearValue.color = {{0.0f, 0.0f, 0.0f, 1.0f}};  // a new Graphics is opaque black
+    if (clearColor) std::memcpy(colorAttachment.clearValue.color.float32, clearColor, 4 * sizeof(float));
     colorAttachment.storeOp = msaa ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE;
     if (msaa) {
         colorAttachment.resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
         colorAttachment.resolveImageView = target_->view;
         colorAttachment.resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     }
-    VkRenderingAttachmentInfo depthAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    VkRenderingAttachmentInfo& depthAttachment = depthAttachment_;
+    depthAttachment = {VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     depthAttachment.imageView = depth_.view;
     depthAttachment.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
     depthAttachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;  // a fresh target's depth is far
     depthAttachment.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
     depthAttachment.clearValue.depthStencil = {1.0f, 0};
+    recording_ = true;
+    renderingOpen_ = false;
+    // With multisampling the prior contents are drawn into every sample
+    // when the rendering opens (unless a clear of every pixel comes first).
+    drawPrior_ = msaa && (prior == Prior::Upload || prior == Prior::Keep);
+}
+
+void Renderer::openRendering() {
+    if (renderingOpen_) return;
+    renderingOpen_ = true;
     VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    ri.renderArea = {{0, 0}, {w, h}};
+    ri.renderArea = {{0, 0}, {width_, height_}};
     ri.layerCount = 1;
     ri.colorAttachmentCount = 1;
-    ri.pColorAttachments = &colorAttachment;
-    ri.pDepthAttachment = &depthAttachment;
+    ri.pColorAttachments = &colorAttachment_;
+    ri.pDepthAttachment = &depthAttachment_;
     vkCmdBeginRendering(cmd_, &ri);
-    recording_ = true;
-    if (msaa && (prior == Prior::Upload || prior == Prior::Keep)) {
+    if (drawPrior_) {
+        drawPrior_ = false;
         // The prior contents, drawn over the whole target into every sample.
-        const VkViewport vp{0, 0, static_cast<float>(w), static_cast<float>(h), 0.0f, 1.0f};
+        // The viewport and scissor of the frame's next command are set after.
+        const VkViewport vp{0, 0, static_cast<float>(width_), static_cast<float>(height_), 0.0f, 1.0f};
         vkCmdSetViewport(cmd_, 0, 1, &vp);
-        const VkRect2D sc{{0, 0}, {w, h}};
+        const VkRect2D sc{{0, 0}, {width_, height_}};
         vkCmdSetScissor(cmd_, 0, 1, &sc);
         TextureMirror priorTexture;
         priorTexture.image = initial_;
@@ -375,6 +414,7 @@ void Renderer::begin(Graphics3D& g3d, bool coveredByClear) {
         const float tex[4] = {0.0f, 0.0f, 1.0f, 1.0f};
         drawQuad(set, offset, textures, pipelineKey(u, nullptr, static_cast<std::uint8_t>(samples_)), false, false, ndc,
                  0.0f, tex);
+        setViewportState();  // the draw that opened the rendering follows
     }
 }
 
@@ -400,7 +440,10 @@ void Renderer::applyViewport(Graphics3D& g3d) {
     scissorEmpty_ = scissor_.w <= 0 || scissor_.h <= 0;
     depthNear_ = g3d.getDepthRangeNear();
     depthFar_ = g3d.getDepthRangeFar();
-    if (scissorEmpty_) return;
+    if (!scissorEmpty_) setViewportState();
+}
+
+void Renderer::setViewportState() {
     VkViewport vp{static_cast<float>(viewport_.x), static_cast<float>(viewport_.y), static_cast<float>(viewport_.w),
                   static_cast<float>(viewport_.h), depthNear_, depthFar_};
     vkCmdSetViewport(cmd_, 0, 1, &vp);
@@ -482,21 +525,55 @@ void Renderer::fillFog(DrawUniforms& u, const Appearance* app) const {
 
 void Renderer::clear(Graphics3D& g3d, const Background* background) {
     const bool clearColor = !background || background->isColorClearEnabled();
+    float color[4] = {0, 0, 0, 0};
+    if (background) argb(static_cast<std::uint32_t>(background->getColor()), color, true);
     Rect viewport;
     const Rect area = drawArea(g3d, viewport);
-    begin(g3d, clearColor && area.x == 0 && area.y == 0 && area.w == g3d.targetWidth() && area.h == g3d.targetHeight());
+    const bool whole = area.x == 0 && area.y == 0 && area.w == g3d.targetWidth() && area.h == g3d.targetHeight();
+
+    // The image: the crop rectangle covers the viewport exactly (spec §5.9).
+    Image2D* image = clearColor && background ? background->getImage().get() : nullptr;
+    if (image && (background->getCropWidth() <= 0 || background->getCropHeight() <= 0)) image = nullptr;
+    const bool repeatX = background && background->getImageModeX() == Background::REPEAT;
+    const bool repeatY = background && background->getImageModeY() == Background::REPEAT;
+    // A BORDER axis shows the background colour where the crop leaves the
+    // image (a discard in the quad's shader). A crop inside the image maps
+    // every pixel centre at least half a pixel's step inside [0, 1], so the
+    // discard can go when that step is well above float rounding.
+    auto inside = [](int cropPos, int cropSize, int imageSize, int viewportSize) {
+        return cropPos >= 0 && cropPos + cropSize <= imageSize &&
+               0.5 * cropSize / imageSize / std::max(viewportSize, 1) > 1e-5;
+    };
+    const bool borderX = image && !repeatX &&
+                         !inside(background->getCropX(), background->getCropWidth(), image->getWidth(), viewport.w);
+    const bool borderY = image && !repeatY &&
+                         !inside(background->getCropY(), background->getCropHeight(), image->getHeight(), viewport.h);
+    const bool imageCovers = image && !borderX && !borderY;  // the quad writes every pixel of the viewport
+
+    // Until the rendering opens (the frame's first draw), a clear of every
+    // pixel's colour is the colour attachment's load operation (none when the
+    // image covers every pixel anyway), and a depth clear is moot: the depth
+    // attachment loads as far. vkCmdClearAttachments costs lavapipe a fill of
+    // the image on its submitting thread, after the tile clears of the load
+    // operations (measured: ~40% of an empty 1280x960 frame's CPU time).
+    const bool drawn = recording_ && renderingOpen_;
+    const bool asLoadOp = !drawn && clearColor && whole;
+    if (recording_ && asLoadOp) {  // nothing drawn yet: the prior contents are moot
+        colorAttachment_.loadOp = imageCovers ? VK_ATTACHMENT_LOAD_OP_DONT_CARE : VK_ATTACHMENT_LOAD_OP_CLEAR;
+        std::memcpy(colorAttachment_.clearValue.color.float32, color, sizeof(color));
+        drawPrior_ = false;
+    }
+    begin(g3d, asLoadOp && !imageCovers ? color : nullptr, asLoadOp);
     applyViewport(g3d);
     if (scissorEmpty_) return;
-    const bool clearDepth = (!background || background->isDepthClearEnabled()) && hasDepth_;
+    const bool clearDepth = (!background || background->isDepthClearEnabled()) && hasDepth_ && drawn;
     VkClearRect rect{{{scissor_.x, scissor_.y}, {static_cast<std::uint32_t>(scissor_.w), static_cast<std::uint32_t>(scissor_.h)}}, 0, 1};
     VkClearAttachment attachments[2]{};
     std::uint32_t count = 0;
-    if (clearColor) {
-        float c[4] = {0, 0, 0, 0};
-        if (background) argb(static_cast<std::uint32_t>(background->getColor()), c, true);
+    if (clearColor && !asLoadOp && !imageCovers) {
         attachments[count].aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
         attachments[count].colorAttachment = 0;
-        std::memcpy(attachments[count].clearValue.color.float32, c, sizeof(c));
+        std::memcpy(attachments[count].clearValue.color.float32, color, sizeof(color));
         ++count;
     }
     if (clearDepth) {
@@ -504,14 +581,13 @@ void Renderer::clear(Graphics3D& g3d, const Background* background) {
         attachments[count].clearValue.depthStencil = {1.0f, 0};
         ++count;
     }
-    if (count) vkCmdClearAttachments(cmd_, count, attachments, 1, &rect);
+    if (count) {
+        openRendering();
+        vkCmdClearAttachments(cmd_, count, attachments, 1, &rect);
+    }
 
-    // The image: the crop rectangle covers the viewport exactly (spec §5.9).
-    Image2D* image = background ? background->getImage().get() : nullptr;
-    if (!clearColor || !image || background->getCropWidth() <= 0 || background->getCropHeight() <= 0) return;
+    if (!image) return;
     const TextureMirror& tex = resources_->texture(*image, false);
-    const bool repeatX = background->getImageModeX() == Background::REPEAT;
-    const bool repeatY = background->getImageModeY() == Background::REPEAT;
     VkSampler sampler = resources_->sampler(repeatX ? Texture2D::WRAP_REPEAT : Texture2D::WRAP_CLAMP,
                                             repeatY ? Texture2D::WRAP_REPEAT : Texture2D::WRAP_CLAMP,
                                             Texture2D::FILTER_NEAREST, Texture2D::FILTER_BASE_LEVEL);
@@ -522,7 +598,7 @@ void Renderer::clear(Graphics3D& g3d, const Background* background) {
     const float texRect[4] = {static_cast<float>(background->getCropX()) / iw, static_cast<float>(background->getCropY()) / ih,
                               static_cast<float>(background->getCropX() + background->getCropWidth()) / iw,
                               static_cast<float>(background->getCropY() + background->getCropHeight()) / ih};
-    u.texEnv[0][3] = (repeatX ? 0 : 1) | (repeatY ? 0 : 2);
+    u.texEnv[0][3] = (borderX ? 1 : 0) | (borderY ? 2 : 0);
     const float ndc[4] = {-1.0f, -1.0f, 1.0f, 1.0f};
     drawQuad(set, offset, textures, pipelineKey(u, nullptr, static_cast<std::uint8_t>(samples_)), false, false, ndc,
              0.0f, texRect);
@@ -554,6 +630,7 @@ DrawUniforms& Renderer::quadUniforms(const TextureMirror& tex, VkSampler sampler
 void Renderer::drawQuad(VkDescriptorSet uniformSet, std::uint32_t offset, VkDescriptorSet textures,
                         const PipelineKey& key, bool depthTest, bool depthWrite, const float r[4], float z,
                         const float t[4]) {
+    openRendering();
     if (quadOffset_ + kQuadBytes > quads_.size) {
         // A bigger ring; the full one stays alive until the frame is done.
         retiredQuads_.push_back(quads_);
@@ -622,6 +699,7 @@ void Renderer::drawSubmesh(const detail::RenderQueue& queue, const detail::Rende
                                     std::to_string(item.indices->maxIndex()) + " but the VertexBuffer has " +
                                     std::to_string(vm.vertexCount) + " vertices");
 
+    openRendering();  // before any state below: drawing the prior contents changes it
     VkDescriptorSet set;
     std::uint32_t offset;
     DrawUniforms& u = allocUniforms(set, offset);
@@ -784,16 +862,25 @@ void Renderer::drawSprite(const detail::RenderQueue& queue, const detail::Render
 void Renderer::release(Graphics3D& g3d) {
     if (!recording_) return;
     recording_ = false;
+    openRendering();  // a frame of clears only: their load operation
     vkCmdEndRendering(cmd_);
     const VkImage colorImage = target_->image;
-    barrier(cmd_, colorImage, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-            VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
     // A window reads back only on request (screenshots); other targets always.
     const bool readback = window_ ? window_->takeReadbackRequest() : true;
     // A window screenshot with its overlay reads the swapchain image instead.
     bool readbackBgra = readback && window_ && window_->readbackWithOverlay();
-    if (readback && !readbackBgra) copyToHost(colorImage);
+    // A host image target is read where it is (GENERAL layout for host access).
+    const bool inPlace = !window_ && color_.mapped;
+    if (inPlace) {
+        barrier(cmd_, colorImage, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+    } else {
+        barrier(cmd_, colorImage, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+        if (readback && !readbackBgra) copyToHost(colorImage);
+    }
     const bool presenting = window_ && recordPresent(*window_, readbackBgra);
     if (readbackBgra && !presenting) readbackBgra = false;
     check(vkEndCommandBuffer(cmd_), "vkEndCommandBuffer");
@@ -823,7 +910,7 @@ void Renderer::release(Graphics3D& g3d) {
     if (window_) window_->markReadback();
     // Texels are RGBA, except a swapchain image's (the window with its overlay).
     const bool bgra = readbackBgra && window_->swapchain().format() == VK_FORMAT_B8G8R8A8_UNORM;
-    const auto* src = static_cast<const std::uint8_t*>(transfer_.mapped);
+    const auto* src = static_cast<const std::uint8_t*>(inPlace ? color_.mapped : transfer_.mapped);
     const std::size_t n = static_cast<std::size_t>(width_) * height_;
     if (Image2D* image = g3d.targetImage()) {
         if (image->getFormat() == Image2D::RGBA) {

@@ -44,9 +44,17 @@ private:
         VkDescriptorSet set = VK_NULL_HANDLE;
     };
 
-    /// Opens the frame's command buffer; `coveredByClear`: the first command
-    /// clears every pixel's colour, so the prior contents need not be loaded.
-    void begin(Graphics3D& g3d, bool coveredByClear = false);
+    /// Opens the frame's command buffer. `covered`: the first command writes
+    /// every pixel, so the prior contents need not be loaded; `clearColor`
+    /// (implies covered): that command is a clear to this colour, made the
+    /// colour attachment's load operation.
+    void begin(Graphics3D& g3d, const float* clearColor = nullptr, bool covered = false);
+    /// Begins the frame's rendering (dynamic rendering with the attachments
+    /// begin() prepared) unless it is open; draws the prior contents into a
+    /// multisampled target first.
+    void openRendering();
+    /// Records viewport_, scissor_ and the depth range.
+    void setViewportState();
     /// The viewport (translated by the Graphics origin) and the pixels a
     /// draw may touch: viewport ∩ Graphics clip ∩ target.
     static Rect drawArea(const Graphics3D& g3d, Rect& viewport);
@@ -95,6 +103,9 @@ private:
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;
     bool recording_ = false;
+    bool renderingOpen_ = false;  // vkCmdBeginRendering recorded (openRendering)
+    bool drawPrior_ = false;      // multisampled: the prior contents are still to be drawn
+    VkRenderingAttachmentInfo colorAttachment_{}, depthAttachment_{};  // of the frame, set by begin()
     bool hasDepth_ = true;
     bool computeSkinning_ = false;  // Graphics3D::SKINNING_COMPUTE for the queue being drawn
     Buffer transfer_;  // upload of the target's pixels and read-back

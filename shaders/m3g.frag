@@ -31,9 +31,15 @@ layout(constant_id = 4) const int TEX0_FORMAT = 3;
 layout(constant_id = 5) const int TEX1_FORMAT = 3;
 layout(constant_id = 6) const bool FLAT = false;
 layout(constant_id = 7) const bool TWO_SIDED = true;
+// Per unit: the texture matrix's bottom row is not (0, 0, 0, 1), so q may
+// differ from 1 and s, t are divided by it. Texture2D's own transforms are
+// affine; only a general matrix (setTransform) can make them projective.
+// Affine units interpolate s and t only and skip the division.
+layout(constant_id = 8) const bool TEX0_PROJECTIVE = true;
+layout(constant_id = 9) const bool TEX1_PROJECTIVE = true;
 
-vec4 applyUnit(vec4 cf, int unit, int func, int format, vec4 tc) {
-    vec2 st = tc.xy / tc.w;
+vec4 applyUnit(vec4 cf, int unit, int func, int format, bool projective, vec4 tc) {
+    vec2 st = projective ? tc.xy / tc.w : tc.xy;
     if (MAY_DISCARD) {
         int border = u.texEnv[unit].w;
         bool outsideS = (border & 1) != 0 && (st.x < 0.0 || st.x > 1.0);
@@ -66,8 +72,8 @@ vec4 applyUnit(vec4 cf, int unit, int func, int format, vec4 tc) {
 void main() {
     bool back = TWO_SIDED && !gl_FrontFacing;
     vec4 color = FLAT ? (back ? inFlatBack : inFlatFront) : (back ? inBack : inFront);
-    if (TEX0 != 0) color = applyUnit(color, 0, TEX0, TEX0_FORMAT, inTex0);
-    if (TEX1 != 0) color = applyUnit(color, 1, TEX1, TEX1_FORMAT, inTex1);
+    if (TEX0 != 0) color = applyUnit(color, 0, TEX0, TEX0_FORMAT, TEX0_PROJECTIVE, inTex0);
+    if (TEX1 != 0) color = applyUnit(color, 1, TEX1, TEX1_FORMAT, TEX1_PROJECTIVE, inTex1);
 
     // Alpha test: pass if A >= threshold (off at 0).
     if (MAY_DISCARD && u.misc.y > 0.0 && color.a < u.misc.y) discard;

@@ -275,6 +275,43 @@ TEST_F(VkTest, LightingTwoSided) {
     expectGolden(*img, "lighting_two_sided", 3, 0.0);
 }
 
+TEST_F(VkTest, LightingTwoSidedFlat) {
+    // LightingTwoSided's four cases with SHADE_FLAT: the colours come from
+    // the flat outputs (m3g.vert writes only the outputs m3g.frag reads:
+    // flat front and back here), with the same hand values since the
+    // normals are uniform.
+    auto img = target(64, 64);
+    Ref<Camera> cam(new Camera());
+    Graphics3D* g = begin(img.get(), cam.get());
+    g->clear(nullptr);
+    Ref<Light> behind = light(Light::DIRECTIONAL);
+    Ref<Light> front = light(Light::DIRECTIONAL);
+    const Transform flip = rotX(180);
+    auto mat = material(0x000000, 0xFFCCCCCC);
+    const int winding[4] = {PolygonMode::WINDING_CW, PolygonMode::WINDING_CW, PolygonMode::WINDING_CCW,
+                            PolygonMode::WINDING_CW};
+    const bool twoSided[4] = {false, true, true, true}, lightBehind[4] = {true, true, true, false};
+    const double expected[4] = {0.0, 0.8, 0.0, 0.0};
+    for (int q = 0; q < 4; ++q) {
+        Ref<PolygonMode> pm(new PolygonMode());
+        pm->setCulling(PolygonMode::CULL_NONE);
+        pm->setShading(PolygonMode::SHADE_FLAT);
+        pm->setWinding(winding[q]);
+        pm->setTwoSidedLightingEnable(twoSided[q]);
+        g->resetLights();
+        if (lightBehind[q]) g->addLight(behind.get(), &flip);
+        else g->addLight(front.get(), nullptr);
+        Quad quad = quadrant(q);
+        g->render(quad.vb.get(), quad.ib.get(), appearance(mat.get(), pm.get()).get(), nullptr);
+    }
+    g->releaseTarget();
+    for (int q = 0; q < 4; ++q) {
+        SCOPED_TRACE(q);
+        EXPECT_PIXEL(*img, kCentreX[q], kCentreY[q], grey(expected[q], 255));
+        EXPECT_PIXEL(*img, kCentreX[q] - 12, kCentreY[q] + 12, grey(expected[q], 255));
+    }
+}
+
 TEST_F(VkTest, LightingScopeInWorld) {
     // Light scope against mesh scope (not the camera's): white light scope 2,
     // red light scope 4; meshes with scope 1, 2 and 6. A third light (scope
@@ -341,6 +378,50 @@ TEST_F(VkTest, LightingEightLights) {
     EXPECT_PIXEL(*img, 16, 32, Rgba{144, 144, 144, -1});
     EXPECT_PIXEL(*img, 48, 32, Rgba{144, 144, 144, -1});
     expectGolden(*img, "lighting_eight_lights", 3, 0.0);
+}
+
+TEST_F(VkTest, LightingMixedModesInOneDraw) {
+    // Four lights of four modes in one draw, in two orders (each light's
+    // mode is compiled into the pipeline by its index, PipelineKey): a red
+    // spot (intensity 0.5) and a green omni 0.5 above the quadrant's centre,
+    // a blue ambient light (0.25) and a red directional one at 60 degrees
+    // (intensity 0.5). Every corner sees the point lights at
+    // cos = 0.5 / sqrt(0.75) (inside the 60-degree cone), so
+    // red = 0.5 cos + 0.5 cos 60, green = cos, blue = 0.25.
+    auto img = target(64, 64);
+    Ref<Camera> cam(new Camera());
+    Graphics3D* g = begin(img.get(), cam.get());
+    g->clear(nullptr);
+    auto app = appearance(material(0xFFFFFF, 0xFFFFFFFF).get());
+    Ref<Light> spot = light(Light::SPOT, 0xFF0000, 0.5f);
+    spot->setSpotAngle(60);
+    Ref<Light> omni = light(Light::OMNI, 0x00FF00);
+    Ref<Light> ambient = light(Light::AMBIENT, 0x0000FF, 0.25f);
+    Ref<Light> directional = light(Light::DIRECTIONAL, 0xFF0000, 0.5f);
+    const Transform slant = rotX(60);
+    for (int q : {0, 3}) {
+        g->resetLights();
+        const Transform above = m3gtest::translation(kNdcX[q], kNdcY[q], 0.5f);
+        if (q == 0) {
+            g->addLight(spot.get(), &above);
+            g->addLight(ambient.get(), nullptr);
+            g->addLight(omni.get(), &above);
+            g->addLight(directional.get(), &slant);
+        } else {
+            g->addLight(directional.get(), &slant);
+            g->addLight(omni.get(), &above);
+            g->addLight(ambient.get(), nullptr);
+            g->addLight(spot.get(), &above);
+        }
+        Quad quad = quadrant(q);
+        g->render(quad.vb.get(), quad.ib.get(), app.get(), nullptr);
+    }
+    g->releaseTarget();
+    const double cosT = 0.5 / std::sqrt(0.75);
+    const Rgba want{level(0.5 * cosT + 0.5 * kCos60), level(cosT), level(0.25), 255};  // 137, 147, 64
+    EXPECT_PIXEL(*img, kCentreX[0], kCentreY[0], want);
+    EXPECT_PIXEL(*img, kCentreX[3], kCentreY[3], want);
+    EXPECT_PIXEL(*img, kCentreX[1], kCentreY[1], Rgba{0, 0, 0, -1});  // not drawn: the clear
 }
 
 TEST_F(VkTest, LightingRenormalisedNormals) {

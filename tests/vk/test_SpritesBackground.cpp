@@ -393,3 +393,50 @@ TEST_F(VkTest, BackgroundNearestRowsAtExactTexelEdges) {
     }
     EXPECT_EQ(mismatches, 0);
 }
+
+TEST_F(VkTest, BackgroundImageCoveringEveryPixelAfterOtherClears) {
+    // Clears before a frame's first draw become load operations, and a
+    // background image whose crop lies inside the image writes every pixel
+    // with no colour clear at all: neither the earlier clears (red) nor the
+    // background colour (magenta) nor the prior contents (black) may show.
+    // Crop (1, 1, 2, 2) of the 4x4 quadrant image is one texel of each
+    // colour: red, green / blue, white, stretched over the viewport.
+    auto img = target(64, 64, 0xFF000000u);
+    Ref<Image2D> image = quadrants(4);
+    Ref<Background> red(new Background());
+    red->setColor(static_cast<int>(0xFFFF0000u));
+    Ref<Background> covering(new Background());
+    covering->setColor(static_cast<int>(0xFFFF00FFu));
+    covering->setImage(image.get());
+    covering->setImageMode(Background::BORDER, Background::BORDER);
+    covering->setCrop(1, 1, 2, 2);
+    auto quadrantColour = [](int x, int y, int w, int h) {
+        const bool right = x >= w / 2, bottom = y >= h / 2;
+        return right ? (bottom ? kWhite : kGreen) : (bottom ? kBlue : kRed);
+    };
+    Graphics3D* g = Graphics3D::getInstance();
+    g->bindTarget(img.get());
+    g->clear(nullptr);
+    g->clear(red.get());
+    g->clear(covering.get());
+    g->releaseTarget();
+    int mismatches = 0;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const auto r = m3gtest::pixelNear(*img, x, y, quadrantColour(x, y, 64, 64), 0);
+            if (!r && ++mismatches <= 5) ADD_FAILURE() << "first frame: " << r.message();
+        }
+    // The next frame covers the left half only: the right half keeps the
+    // first frame's pixels (the prior contents are loaded).
+    g->bindTarget(img.get());
+    g->setViewport(0, 0, 32, 64);
+    g->clear(covering.get());
+    g->releaseTarget();
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const Rgba want = x < 32 ? quadrantColour(x, y, 32, 64) : quadrantColour(x, y, 64, 64);
+            const auto r = m3gtest::pixelNear(*img, x, y, want, 0);
+            if (!r && ++mismatches <= 10) ADD_FAILURE() << "second frame: " << r.message();
+        }
+    EXPECT_EQ(mismatches, 0);
+}

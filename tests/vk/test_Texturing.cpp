@@ -221,6 +221,35 @@ TEST_F(VkTest, TextureTransformTranslateAndScale) {
     expectGolden(*img, "texture_transform", 3, 0.0);
 }
 
+TEST_F(VkTest, TextureProjectiveTransformDividesByQ) {
+    // A general texture matrix with bottom row (0.5, 0, 0, 0.5): q = (s + 1)
+    // / 2, so the shader samples at s' = 2s / (s + 1), t' = 2t / (s + 1)
+    // (affine matrices compile the division out, PipelineKey::texProjective).
+    // Over the 64x64 quad s = (x + 0.5) / 64: the texel columns meet at
+    // s' = 0.5, that is s = 1/3 (x = 20.8) instead of x = 32.
+    auto img = target(64, 64);
+    Ref<Camera> cam(new Camera());
+    Graphics3D* g = begin(img.get(), cam.get());
+    g->clear(nullptr);
+    Ref<Texture2D> tex(new Texture2D(fourColours().get()));
+    tex->setBlending(Texture2D::FUNC_REPLACE);
+    const Transform projective = Transform::fromRows({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0.5f, 0, 0, 0.5f});
+    tex->setTransform(&projective);
+    Quad quad = makeQuad(-1, -1, 1, 1);
+    g->render(quad.vb.get(), quad.ib.get(), textured(tex.get()).get(), nullptr);
+    g->releaseTarget();
+    auto expected = [](int x, int y) {
+        const double s = (x + 0.5) / 64.0, t = (y + 0.5) / 64.0, q = 0.5 * s + 0.5;
+        const double sp = s / q, tp = std::fmod(t / q, 1.0);  // REPEAT
+        return sp < 0.5 ? (tp < 0.5 ? kRed : kBlue) : (tp < 0.5 ? kGreen : kWhite);
+    };
+    for (const auto& [x, y] : {std::pair{16, 4}, {26, 4}, {60, 4}, {4, 60}, {26, 30}, {60, 40}}) {
+        SCOPED_TRACE(::testing::Message() << "pixel " << x << ", " << y);
+        EXPECT_PIXEL_TOL(*img, x, y, 0, expected(x, y));
+    }
+    EXPECT_PIXEL_TOL(*img, 26, 4, 0, kGreen);  // s = 0.41: the left texel without the division
+}
+
 TEST_F(VkTest, TextureUnitReadsItsOwnCoordinatesAndTransform) {
     // Only unit 1 is textured (four colours, REPLACE). Its coordinate set is
     // biased by s + 0.5 and its Texture2D translated by t + 0.5, while unit
