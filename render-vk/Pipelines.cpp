@@ -73,14 +73,26 @@ VkPipeline Pipelines::get(const PipelineKey& key) {
 }
 
 void Pipelines::prewarm(std::uint8_t samples) {
-    // Every blend mode, lit and unlit, untextured and with an RGB texture
-    // modulated on unit 0 (the commonest textured draw).
+    // Every blend mode, unlit and lit by the commonest light setups (none,
+    // one directional light, an ambient and a directional light; no
+    // specular), untextured and with an RGB texture modulated on unit 0
+    // (the commonest textured draw). The light setup is part of the key
+    // (m3g.vert's LIGHT_COUNT and LIGHT_MODES), so other setups are created
+    // at their first draw.
+    struct LightSetup {
+        std::uint8_t lighting, count;
+        std::uint16_t modes;
+    };
+    constexpr LightSetup kSetups[] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 1}, {1, 2, 0 | (1 << 2)}};
     for (std::uint8_t blend = 0; blend < 5; ++blend) {
-        for (std::uint8_t lit = 0; lit < 2; ++lit) {
+        for (const LightSetup& setup : kSetups) {
             PipelineKey key;
             key.blend = blend;
             key.samples = samples;
-            key.lighting = lit;
+            key.lighting = setup.lighting;
+            key.lightCount = setup.count;
+            key.lightModes = setup.modes;
+            key.specular = 0;
             get(key);
             key.texFunc[0] = 2;  // TEX_MODULATE
             key.texFormat[0] = 1;
