@@ -241,12 +241,12 @@ int benchSkin(const BenchOptions& o) {
         const double bytes = runs ? double(m3gbench::SkinStreamRoof::kVertexBytes)
                                   : double(m3gbench::SkinStreamRoof::kBytesPerVertex);
         std::printf("\nmemory-bandwidth reference, %d influences: a plain stream of the kernel's %.0f bytes per\n"
-                    "vertex (%s), 1 thread and %d threads; 'share' = stream time / kernel time;\n"
+                    "vertex\n  (%s),\n1 thread and %d threads; 'share' = stream time / kernel time;\n"
                     "last columns: the %.0f-byte stream of %s:\n"
                     "%9s %10s %8s %9s %9s %7s %10s %8s %9s %9s %7s %10s %10s\n",
                     m3gbench::SkinWorkload::kMaxInfluences, bytes,
-                    runs ? "shared-influence runs: position and normal read and written; the influences once per run"
-                         : "loose vertices: list entry, position, normal, 4 bone indices and weights read; position "
+                    runs ? "shared-influence runs: position and normal read and written, the influences once per run"
+                         : "loose vertices: list entry, position, normal, 4 bone indices and weights read;\n  position "
                            "and normal written",
                     pool.threadCount(),
                     runs ? double(m3gbench::SkinStreamRoof::kBytesPerVertex)

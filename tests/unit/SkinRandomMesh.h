@@ -121,6 +121,49 @@ inline void skinAll(const RandomMesh& m, const std::vector<PaletteEntry>& pal, I
     }
 }
 
+/// The palette of bones given as bone -> mesh matrices (row-major 4x4),
+/// at rest the identity.
+inline std::vector<PaletteEntry> paletteAtRestIdentity(const std::vector<std::array<float, 16>>& boneToMesh) {
+    std::vector<float> a, r;
+    const std::array<float, 16> id{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    for (const auto& m : boneToMesh) {
+        a.insert(a.end(), m.begin(), m.end());
+        r.insert(r.end(), id.begin(), id.end());
+    }
+    std::vector<PaletteEntry> out(boneToMesh.size());
+    PaletteJob job;
+    job.boneCount = out.size();
+    job.boneToMesh = a;
+    job.atRest = r;
+    job.output = out;
+    EXPECT_TRUE(job.run());
+    return out;
+}
+
+/// A job over listed `vertices` and `runs` of `n` vertices in packed
+/// arrays (stride 3), `influences` used slots of `stride`.
+inline SkinningJob arraysJob(std::span<const std::uint32_t> vertices, std::span<const InfluenceRun> runs,
+                             std::size_t n, int influences, int stride, const std::vector<std::int32_t>& bones,
+                             const std::vector<float>& weights, const std::vector<PaletteEntry>& pal,
+                             const std::vector<float>& in, const std::vector<float>& nin, std::vector<float>& out,
+                             std::vector<float>& nout, Isa isa) {
+    SkinningJob job;
+    job.vertices = vertices;
+    job.runs = runs;
+    job.vertexCount = n;
+    job.influenceCount = influences;
+    job.influenceStride = stride;
+    job.boneIndices = bones;
+    job.boneWeights = weights;
+    job.palette = pal;
+    job.inPositions = in;
+    job.inNormals = nin;
+    job.outPositions = out;
+    job.outNormals = nout;
+    job.isa = isa;
+    return job;
+}
+
 inline std::vector<PaletteEntry> paletteOf(const RandomMesh& m) {
     std::vector<PaletteEntry> pal(m.boneToMesh.size() / 16);
     PaletteJob job;

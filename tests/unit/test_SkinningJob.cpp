@@ -34,21 +34,7 @@ constexpr Mat kIdentity{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
 Mat translation(float x, float y, float z) { return {1, 0, 0, x, 0, 1, 0, y, 0, 0, 1, z, 0, 0, 0, 1}; }
 const Mat kRz90{0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};  // x -> y, y -> -x
 
-std::vector<PaletteEntry> palette(const std::vector<Mat>& boneToMesh) {
-    std::vector<float> a, r;
-    for (const Mat& m : boneToMesh) {
-        a.insert(a.end(), m.begin(), m.end());
-        r.insert(r.end(), kIdentity.begin(), kIdentity.end());
-    }
-    std::vector<PaletteEntry> out(boneToMesh.size());
-    PaletteJob job;
-    job.boneCount = boneToMesh.size();
-    job.boneToMesh = a;
-    job.atRest = r;
-    job.output = out;
-    EXPECT_TRUE(job.run());
-    return out;
-}
+std::vector<PaletteEntry> palette(const std::vector<Mat>& boneToMesh) { return m3gtest::paletteAtRestIdentity(boneToMesh); }
 
 const std::vector<Isa> kPaths{Isa::Scalar, Isa::Sse2, Isa::Avx2};
 
@@ -68,17 +54,8 @@ struct OneVertex {
             bones[k] = infl[k].first;
             weights[k] = infl[k].second;
         }
-        job.vertices = list;
-        job.vertexCount = 1;
-        job.influenceCount = static_cast<int>(infl.size());
-        job.influenceStride = stride;
-        job.boneIndices = bones;
-        job.boneWeights = weights;
-        job.palette = pal;
-        job.inPositions = in;
-        job.inNormals = nin;
-        job.outPositions = out;
-        job.outNormals = nout;
+        job = m3gtest::arraysJob(list, {}, 1, static_cast<int>(infl.size()), stride, bones, weights, pal, in, nin, out,
+                                 nout, Isa::Auto);
     }
     bool run(Isa isa, std::array<float, 3> p, std::array<float, 3> n) {
         std::copy(p.begin(), p.end(), in.begin());
@@ -589,19 +566,7 @@ TEST(SkinningJob, ShortInfluenceArraysAreReadOnlyWhereValid) {
     for (Isa isa : kPaths) {
         if (!isaSupported(isa)) continue;
         std::vector<float> out(n * 3, -9.0f), nout(n * 3, -9.0f);
-        SkinningJob job;
-        job.vertices = list;
-        job.vertexCount = n;
-        job.influenceCount = 2;
-        job.influenceStride = 4;
-        job.boneIndices = bones;
-        job.boneWeights = weights;
-        job.palette = pal;
-        job.inPositions = in;
-        job.inNormals = nin;
-        job.outPositions = out;
-        job.outNormals = nout;
-        job.isa = isa;
+        SkinningJob job = m3gtest::arraysJob(list, {}, n, 2, 4, bones, weights, pal, in, nin, out, nout, isa);
         ASSERT_TRUE(job.run()) << isaName(isa);
         if (expectP.empty()) {
             expectP = out;

@@ -5,6 +5,7 @@
 // founding paper's bookkeeping done when addTransform is called).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstring>
 #include <numeric>
 #include <string>
@@ -104,19 +105,9 @@ struct RunJob {
     std::vector<float> weights, in, nin, out, nout;
     std::vector<InfluenceRun> runs;
     SkinningJob job;
-    explicit RunJob(std::size_t n) : bones(n, 0), weights(n, 1.0f), in(n * 3, 1.0f), nin(n * 3, 1.0f),
-                                     out(n * 3), nout(n * 3) {
-        job.vertexCount = n;
-        job.influenceCount = 1;
-        job.influenceStride = 1;
-        job.boneIndices = bones;
-        job.boneWeights = weights;
-        job.palette = pal;
-        job.inPositions = in;
-        job.inNormals = nin;
-        job.outPositions = out;
-        job.outNormals = nout;
-    }
+    explicit RunJob(std::size_t n)
+        : bones(n, 0), weights(n, 1.0f), in(n * 3, 1.0f), nin(n * 3, 1.0f), out(n * 3), nout(n * 3),
+          job(m3gtest::arraysJob({}, {}, n, 1, 1, bones, weights, pal, in, nin, out, nout, Isa::Auto)) {}
     bool validWith(std::vector<InfluenceRun> r) {
         runs = std::move(r);
         job.runs = runs;
@@ -156,19 +147,8 @@ TEST(SkinningJob, ValidateChecksRuns) {
 // Normal (1, 0, 0) -> 0.25 (1, 0, 0) + 0.75 (0, 1, 0), renormalised.
 TEST(SkinningJob, RunOfTwoInfluencesHandComputedOnEveryPath) {
     const std::size_t n = 11;
-    std::vector<PaletteEntry> pal(2);
-    {
-        const float a[32] = {1, 0, 0, 1, 0, 1, 0, 2, 0, 0, 1, 3, 0, 0, 0, 1,
-                             0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-        const float id[32] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1,
-                              1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-        PaletteJob pj;
-        pj.boneCount = 2;
-        pj.boneToMesh = a;
-        pj.atRest = id;
-        pj.output = pal;
-        ASSERT_TRUE(pj.run());
-    }
+    const std::vector<PaletteEntry> pal = m3gtest::paletteAtRestIdentity({{1, 0, 0, 1, 0, 1, 0, 2, 0, 0, 1, 3, 0, 0, 0, 1},
+                                                                         {0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}});
     std::vector<std::int32_t> bones;
     std::vector<float> weights;
     std::vector<float> in, nin;
@@ -183,21 +163,9 @@ TEST(SkinningJob, RunOfTwoInfluencesHandComputedOnEveryPath) {
     for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2}) {
         if (!isaSupported(isa)) continue;
         std::vector<float> out(n * 3, -9.0f), nout(n * 3, -9.0f);
-        SkinningJob job;
-        job.runs = runs;
-        job.vertexCount = n;
-        job.influenceCount = 2;
-        job.influenceStride = 4;
-        job.boneIndices = bones;
-        job.boneWeights = weights;
-        job.palette = pal;
+        SkinningJob job = m3gtest::arraysJob({}, runs, n, 2, 4, bones, weights, pal, in, nin, out, nout, isa);
         job.positionScale = 2.0f;
         job.positionBias = {0.0f, 0.0f, 1.0f};
-        job.inPositions = in;
-        job.inNormals = nin;
-        job.outPositions = out;
-        job.outNormals = nout;
-        job.isa = isa;
         ASSERT_TRUE(job.run()) << isaName(isa);
         for (std::size_t v = 0; v < n; ++v) {
             const float x = static_cast<float>(v);
@@ -313,17 +281,7 @@ TEST(SkinningJob, RunsAtOtherStridesTouchOnlyTheirVertices) {
 // contributes nothing (the checked formula), as on the list path.
 TEST(SkinningJob, RunWithABoneOutsideThePaletteSkipsThatSlot) {
     const std::size_t n = 12;
-    std::vector<PaletteEntry> pal(1);
-    {
-        const float a[16] = {1, 0, 0, 5, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-        const float id[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-        PaletteJob pj;
-        pj.boneCount = 1;
-        pj.boneToMesh = a;
-        pj.atRest = id;
-        pj.output = pal;
-        ASSERT_TRUE(pj.run());
-    }
+    const std::vector<PaletteEntry> pal = m3gtest::paletteAtRestIdentity({{1, 0, 0, 5, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}});
     std::vector<std::int32_t> bones;
     std::vector<float> weights, in, nin;
     for (std::size_t v = 0; v < n; ++v) {
@@ -336,19 +294,7 @@ TEST(SkinningJob, RunWithABoneOutsideThePaletteSkipsThatSlot) {
     for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2}) {
         if (!isaSupported(isa)) continue;
         std::vector<float> out(n * 3, -9.0f), nout(n * 3, -9.0f);
-        SkinningJob job;
-        job.runs = runs;
-        job.vertexCount = n;
-        job.influenceCount = 2;
-        job.influenceStride = 2;
-        job.boneIndices = bones;
-        job.boneWeights = weights;
-        job.palette = pal;
-        job.inPositions = in;
-        job.inNormals = nin;
-        job.outPositions = out;
-        job.outNormals = nout;
-        job.isa = isa;
+        SkinningJob job = m3gtest::arraysJob({}, runs, n, 2, 2, bones, weights, pal, in, nin, out, nout, isa);
         ASSERT_TRUE(job.run()) << isaName(isa);
         for (std::size_t v = 0; v < n; ++v) {
             // 0.5 * ((1, v, 0) + (5, 0, 0)); the normal 0.5 (0, 0, 2) renormalised.

@@ -7,6 +7,7 @@
 #include "SceneKit.h"
 #include "VkTestSupport.h"
 
+#include <array>
 #include <cmath>
 
 using namespace m3g;
@@ -234,13 +235,12 @@ TEST_F(VkTest, LightingVertexColorTracking) {
     expectGolden(*img, "lighting_color_tracking", 3, 0.0);
 }
 
-TEST_F(VkTest, LightingTwoSided) {
-    // A directional light from behind the quads (shining along +Z, L = -Z).
-    // Winding CW makes the counter-clockwise quads back faces.
-    auto img = target(64, 64);
-    Ref<Camera> cam(new Camera());
-    Graphics3D* g = begin(img.get(), cam.get());
-    g->clear(nullptr);
+namespace {
+
+/// LightingTwoSided's four quadrants: a directional light behind the quads
+/// (shining along +Z, L = -Z) or in front; winding CW makes the
+/// counter-clockwise quads back faces. Returns the expected grey levels.
+std::array<double, 4> renderTwoSidedCases(Graphics3D* g, int shading) {
     Ref<Light> behind = light(Light::DIRECTIONAL);
     Ref<Light> front = light(Light::DIRECTIONAL);
     const Transform flip = rotX(180);
@@ -256,9 +256,11 @@ TEST_F(VkTest, LightingTwoSided) {
         {PolygonMode::WINDING_CCW, true, true, 0.0},    // front face keeps +N
         {PolygonMode::WINDING_CW, true, false, 0.0},    // back face, light in front: -N faces away
     };
+    std::array<double, 4> expected{};
     for (int q = 0; q < 4; ++q) {
         Ref<PolygonMode> pm(new PolygonMode());
         pm->setCulling(PolygonMode::CULL_NONE);
+        pm->setShading(shading);
         pm->setWinding(cases[q].winding);
         pm->setTwoSidedLightingEnable(cases[q].twoSided);
         g->resetLights();
@@ -266,49 +268,42 @@ TEST_F(VkTest, LightingTwoSided) {
         else g->addLight(front.get(), nullptr);
         Quad quad = quadrant(q);
         g->render(quad.vb.get(), quad.ib.get(), appearance(mat.get(), pm.get()).get(), nullptr);
+        expected[static_cast<std::size_t>(q)] = cases[q].expected;
     }
+    return expected;
+}
+
+}  // namespace
+
+TEST_F(VkTest, LightingTwoSided) {
+    auto img = target(64, 64);
+    Ref<Camera> cam(new Camera());
+    Graphics3D* g = begin(img.get(), cam.get());
+    g->clear(nullptr);
+    const auto expected = renderTwoSidedCases(g, PolygonMode::SHADE_SMOOTH);
     g->releaseTarget();
     for (int q = 0; q < 4; ++q) {
         SCOPED_TRACE(q);
-        EXPECT_PIXEL(*img, kCentreX[q], kCentreY[q], grey(cases[q].expected, 255));
+        EXPECT_PIXEL(*img, kCentreX[q], kCentreY[q], grey(expected[static_cast<std::size_t>(q)], 255));
     }
     expectGolden(*img, "lighting_two_sided", 3, 0.0);
 }
 
 TEST_F(VkTest, LightingTwoSidedFlat) {
-    // LightingTwoSided's four cases with SHADE_FLAT: the colours come from
-    // the flat outputs (m3g.vert writes only the outputs m3g.frag reads:
-    // flat front and back here), with the same hand values since the
-    // normals are uniform.
+    // The same four cases with SHADE_FLAT: the colours come from the flat
+    // outputs (m3g.vert writes only the outputs m3g.frag reads: flat front
+    // and back here), with the same hand values since the normals are
+    // uniform; a second pixel per quad, off the centre.
     auto img = target(64, 64);
     Ref<Camera> cam(new Camera());
     Graphics3D* g = begin(img.get(), cam.get());
     g->clear(nullptr);
-    Ref<Light> behind = light(Light::DIRECTIONAL);
-    Ref<Light> front = light(Light::DIRECTIONAL);
-    const Transform flip = rotX(180);
-    auto mat = material(0x000000, 0xFFCCCCCC);
-    const int winding[4] = {PolygonMode::WINDING_CW, PolygonMode::WINDING_CW, PolygonMode::WINDING_CCW,
-                            PolygonMode::WINDING_CW};
-    const bool twoSided[4] = {false, true, true, true}, lightBehind[4] = {true, true, true, false};
-    const double expected[4] = {0.0, 0.8, 0.0, 0.0};
-    for (int q = 0; q < 4; ++q) {
-        Ref<PolygonMode> pm(new PolygonMode());
-        pm->setCulling(PolygonMode::CULL_NONE);
-        pm->setShading(PolygonMode::SHADE_FLAT);
-        pm->setWinding(winding[q]);
-        pm->setTwoSidedLightingEnable(twoSided[q]);
-        g->resetLights();
-        if (lightBehind[q]) g->addLight(behind.get(), &flip);
-        else g->addLight(front.get(), nullptr);
-        Quad quad = quadrant(q);
-        g->render(quad.vb.get(), quad.ib.get(), appearance(mat.get(), pm.get()).get(), nullptr);
-    }
+    const auto expected = renderTwoSidedCases(g, PolygonMode::SHADE_FLAT);
     g->releaseTarget();
     for (int q = 0; q < 4; ++q) {
         SCOPED_TRACE(q);
-        EXPECT_PIXEL(*img, kCentreX[q], kCentreY[q], grey(expected[q], 255));
-        EXPECT_PIXEL(*img, kCentreX[q] - 12, kCentreY[q] + 12, grey(expected[q], 255));
+        EXPECT_PIXEL(*img, kCentreX[q], kCentreY[q], grey(expected[static_cast<std::size_t>(q)], 255));
+        EXPECT_PIXEL(*img, kCentreX[q] - 12, kCentreY[q] + 12, grey(expected[static_cast<std::size_t>(q)], 255));
     }
 }
 
