@@ -13,6 +13,8 @@
 #include <utility>
 
 #include <m3g/m3g.h>
+#include <m3g/skin/InfluenceTable.h>
+#include <m3g/skin/Skinning.h>
 #include <nlohmann/json.hpp>
 
 namespace m3gcli {
@@ -300,6 +302,38 @@ struct Dumper {
             bones.push_back(std::move(e));
         }
         j["bones"] = std::move(bones);
+        j["influenceLayout"] = influenceLayout(m);
+    }
+
+    /// How the CPU skinning kernel sees the mesh's vertices (docs/skinning.md):
+    /// how many have 0..N influences, and how many of those with at least
+    /// one lie in shared-influence runs (one blend per run) or are loose
+    /// (one blend per vertex).
+    static Json influenceLayout(const SkinnedMesh* m) {
+        const skin::InfluenceTable& table = m->influenceTable();
+        const VertexBuffer* vb = m->getVertexBuffer().get();
+        const auto vertices = static_cast<std::size_t>(vb ? vb->getVertexCount() : 0);
+        skin::InfluencePartition partition;
+        partition.build(table.bones(), table.weights(), table.maxInfluences(), vertices);
+        std::vector<int> byCount;
+        int runs = 0, runVertices = 0, loose = 0, longest = 0;
+        for (int c = 0; c <= partition.maxInfluences(); ++c) {
+            byCount.push_back(static_cast<int>(partition.group(c).size()));
+            if (c == 0) continue;
+            loose += static_cast<int>(partition.loose(c).size());
+            for (const skin::InfluenceRun& r : partition.runs(c)) {
+                ++runs;
+                runVertices += static_cast<int>(r.vertexCount);
+                longest = std::max(longest, static_cast<int>(r.vertexCount));
+            }
+        }
+        Json j = Json::object();
+        j["verticesByInfluenceCount"] = ints(byCount);
+        j["runs"] = runs;
+        j["runVertices"] = runVertices;
+        j["longestRun"] = longest;
+        j["looseVertices"] = loose;
+        return j;
     }
 
     void sprite(const Sprite3D* s, Json& j) const {

@@ -415,6 +415,14 @@ TEST(ObjectDump, SkinnedMeshBonesAndSkeleton) {
     EXPECT_EQ(b1.at("vertexCount").get<int>(), 6);
     EXPECT_EQ(object(doc, m.at("skeleton").get<int>()).at("parent").get<int>(), 0);
     EXPECT_EQ(doc.at("objectCount").get<int>(), 7);  // mesh, vb, array, strips, skeleton, upper, lower
+    // v0, v1: lower only; v2: both (equal weights); v3..v7: upper only. The
+    // five upper-only vertices are a run (at least 4); v0, v1 (2) and v2 are loose.
+    const json& layout = m.at("influenceLayout");
+    EXPECT_EQ(layout.at("verticesByInfluenceCount").get<std::vector<int>>(), (std::vector<int>{0, 7, 1, 0, 0}));
+    EXPECT_EQ(layout.at("runs").get<int>(), 1);
+    EXPECT_EQ(layout.at("runVertices").get<int>(), 5);
+    EXPECT_EQ(layout.at("longestRun").get<int>(), 5);
+    EXPECT_EQ(layout.at("looseVertices").get<int>(), 3);
 }
 
 TEST(ObjectDump, BonesAndAlignmentTargetsOutsideReferencesAreIncluded) {
