@@ -59,6 +59,36 @@ inline const InfluenceRun* findRun(std::span<const InfluenceRun> runs, std::size
     return runs.data() + (lo - 1);
 }
 
+/// The pieces of a validated run sequence that cover its positions
+/// [begin, end), in order: each a run's first vertex (whose slots the run
+/// uses) and a range of that run's vertices. Every kernel walks runs so.
+class RunPieces {
+public:
+    RunPieces(std::span<const InfluenceRun> runs, std::size_t begin, std::size_t end) noexcept
+        : run_(begin < end ? findRun(runs, begin) : nullptr), position_(begin), end_(end) {}
+    /// The next piece: vertices [first, first + count) of the run starting
+    /// at `runFirst`; false when the range is done.
+    bool next(std::size_t& runFirst, std::size_t& first, std::size_t& count) noexcept {
+        while (position_ < end_) {
+            const InfluenceRun& r = *run_++;
+            const std::size_t offset = position_ - r.start;
+            const std::size_t left = r.vertexCount - offset;
+            const std::size_t n = left < end_ - position_ ? left : end_ - position_;
+            position_ += n;
+            if (n == 0) continue;  // an empty run
+            runFirst = r.firstVertex;
+            first = r.firstVertex + offset;
+            count = n;
+            return true;
+        }
+        return false;
+    }
+
+private:
+    const InfluenceRun* run_;
+    std::size_t position_, end_;
+};
+
 /// x / |x| for an xyz triple in place (each component divided by the
 /// length); a zero-length (or NaN) triple is left as it is. Shared by the scalar paths and the tails.
 inline void normalize3(float* n) noexcept {

@@ -92,16 +92,16 @@ void runRuns(const SkinningJob& job, Isa isa, std::size_t begin, std::size_t end
     std::uint32_t list[256];
     SkinningJob sub = job;
     sub.runs = {};
-    const InfluenceRun* r = detail::findRun(job.runs, begin);
-    while (begin < end) {
-        const std::size_t offset = begin - r->start;
-        const std::size_t left = r->vertexCount - offset;
-        const std::size_t n = std::min({left, end - begin, std::size(list)});
-        for (std::size_t i = 0; i < n; ++i) list[i] = static_cast<std::uint32_t>(r->firstVertex + offset + i);
-        sub.vertices = std::span<const std::uint32_t>(list, n);
-        runRange(sub, isa, 0, n);
-        begin += n;
-        if (n == left) ++r;
+    detail::RunPieces pieces(job.runs, begin, end);
+    std::size_t runFirst, first, count;
+    while (pieces.next(runFirst, first, count)) {
+        for (std::size_t done = 0; done < count;) {
+            const std::size_t n = std::min(count - done, std::size(list));
+            for (std::size_t i = 0; i < n; ++i) list[i] = static_cast<std::uint32_t>(first + done + i);
+            sub.vertices = std::span<const std::uint32_t>(list, n);
+            runRange(sub, isa, 0, n);
+            done += n;
+        }
     }
 }
 

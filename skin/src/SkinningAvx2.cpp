@@ -172,23 +172,16 @@ M3G_AVX2 void skinT(const SkinningJob& j, std::size_t begin, std::size_t end) no
 }
 
 // ---------------------------------------------------------------------------
-// Blocks of eight vertices (K = 1..4 or generic, with normals): the path the
-// positions + normals workloads take. Blocks are list positions 8b .. 8b+7
-// (aligned to the list, whatever the chunk), and each block takes one of:
-//
-// - uniform: eight consecutive vertices with the same slots (bit patterns;
-//   SkinnedMesh::addTransform ranges make such runs the common case): the K
-//   entries are blended once (and reused while the next blocks have the
-//   same slot values), the inputs are loaded as eight-lane x, y, z
-//   (three loads and five shuffles per array) and the blended rows are
-//   applied with three FMAs per output lane set;
-// - per vertex: each vertex's K entries are blended as three 256-bit rows
-//   (P0|P1), (P2|N0), (N1|N2) with FMAs (weights broadcast) and multiplied
-//   by (p|p), (p|n), (n|n), built from broadcast loads and blends with no
-//   shuffle (p = s * xyz + bias with w = 1, n with w = 0); the six dot
-//   products of four vertices come out of one unpack/shuffle/add reduction
-//   per row, giving x|y, z|nx, ny|nz for four vertices, and two such groups
-//   are joined into eight lanes.
+// Blocks of eight vertices (K = 1..4 or generic, with normals): the path
+// a job's loose vertices (SkinningJob::vertices) take; shared-influence
+// runs have their own kernel (skinRuns, below). Blocks are list positions
+// 8b .. 8b+7 (aligned to the list, whatever the chunk). Each vertex's K
+// entries are blended as three 256-bit rows (P0|P1), (P2|N0), (N1|N2) with
+// FMAs (weights broadcast) and multiplied by (p|p), (p|n), (n|n), built from
+// broadcast loads and blends with no shuffle (p = s * xyz + bias with w = 1,
+// n with w = 0); the six dot products of four vertices come out of one
+// unpack/shuffle/add reduction per row, giving x|y, z|nx, ny|nz for four
+// vertices, and two such groups are joined into eight lanes.
 //
 // Then the normals are renormalised eight at a time (inverseLength) and the
 // block is stored, transposed back to xyz triples with 256-bit stores when
@@ -515,22 +508,6 @@ M3G_AVX2_INLINE void scatterSoa3(float* base, std::size_t stride, std::size_t fi
     }
 }
 
-/// True if the eight vertices from `bi`/`bw` (stride 4) all have the slots
-/// at `refB`/`refW` (bit patterns compared).
-M3G_AVX2_INLINE bool sameInfluences(const std::int32_t* bi, const float* bw, const std::int32_t* refB,
-                                    const float* refW) noexcept {
-    const __m256i b = _mm256_broadcastsi128_si256(_mm_loadu_si128(reinterpret_cast<const __m128i*>(refB)));
-    const __m256i w = _mm256_broadcastsi128_si256(_mm_loadu_si128(reinterpret_cast<const __m128i*>(refW)));
-    __m256i eq = _mm256_set1_epi32(-1);
-#pragma GCC unroll 4
-    for (int q = 0; q < 4; ++q) {
-        const __m256i bq = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(bi + 8 * q));
-        const __m256i wq = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(bw + 8 * q));
-        eq = _mm256_and_si256(eq, _mm256_and_si256(_mm256_cmpeq_epi32(bq, b), _mm256_cmpeq_epi32(wq, w)));
-    }
-    return _mm256_movemask_epi8(eq) == -1;
-}
-
 /// The block kernels' view of a job.
 M3G_AVX2_INLINE BlockContext blockContext(const SkinningJob& j) noexcept {
     BlockContext c;
@@ -567,19 +544,8 @@ M3G_AVX2 void skinBlocks(const SkinningJob& j, std::size_t begin, std::size_t en
     const std::size_t safe = c.safeP < c.safeN ? c.safeP : c.safeN;
     const __m256i ramp = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
     const std::size_t total = j.vertices.size();
-    // Vertices whose every slot (not only the first influenceCount) the
-    // influence arrays hold.
-    const std::size_t tableVertices =
-        stride == 0 ? 0 : (j.boneIndices.size() < j.boneWeights.size() ? j.boneIndices.size() : j.boneWeights.size()) / stride;
-    // The blended rows of the last shared-slot block and where its slots are.
-    alignas(32) float rows[24];
-    UniformRows uniform{};  // set before use (`shared`); zeroed for the compiler's analysis
-    bool shared = false;
-    const std::int32_t* sharedB = nullptr;
-    const float* sharedW = nullptr;
-    unsigned sharedBad = 0;
     // Blocks are aligned to the list (list positions 8b .. 8b+7), not to
-    // `begin`: which path a vertex takes (uniform, consecutive, any) depends
+    // `begin`: which path a vertex takes (consecutive or any) depends
     // on its block only, so any chunking gives the same bits. A block cut
     // by [begin, end) is computed whole and only its lanes in range stored.
     for (std::size_t a = begin - begin % 8; a < end; a += 8) {
@@ -601,40 +567,17 @@ M3G_AVX2 void skinBlocks(const SkinningJob& j, std::size_t begin, std::size_t en
             const float* n0 = c.inN + v0 * 3;
             const std::int32_t* b0 = c.boneIndices + v0 * stride;
             const float* w0 = c.boneWeights + v0 * stride;
-            // A run of shared slots usually spans several blocks: the rows
-            // blended for the run's first block serve the next ones too.
-            // (sameInfluences reads all four slots of the eight vertices.)
-            const bool fullSlots = stride == 4 && v0 + 8 <= tableVertices;
-            if (fullSlots && shared && sameInfluences(b0, w0, sharedB, sharedW)) {
-                bad = sharedBad;
-                o = skinUniform(uniform, p0, n0);
-            } else if (fullSlots && sameInfluences(b0, w0, b0, w0)) {
-                __m256 y0, y1, y2;
-                blendRows<K>(c, b0, w0, y0, y1, y2, bad);
-                foldScaleBias(c, y0, y1);
-                _mm256_store_ps(rows, y0);
-                _mm256_store_ps(rows + 8, y1);
-                _mm256_store_ps(rows + 16, y2);
-                broadcastRows(rows, uniform);
-                shared = true;
-                sharedB = b0;
-                sharedW = w0;
-                sharedBad = bad;
-                o = skinUniform(uniform, p0, n0);
-            } else {
-                o = skinBlock<K, true>(
-                    c,
-                    [&](int l, const std::int32_t*& bi, const float*& bw, const float*& p, const float*& nrm,
-                        bool& wide) {
-                        const auto ls = static_cast<std::size_t>(l);
-                        bi = b0 + ls * stride;
-                        bw = w0 + ls * stride;
-                        p = p0 + 3 * ls;
-                        nrm = n0 + 3 * ls;
-                        wide = true;
-                    },
-                    bad);
-            }
+            o = skinBlock<K, true>(
+                c,
+                [&](int l, const std::int32_t*& bi, const float*& bw, const float*& p, const float*& nrm, bool& wide) {
+                    const auto ls = static_cast<std::size_t>(l);
+                    bi = b0 + ls * stride;
+                    bw = w0 + ls * stride;
+                    p = p0 + 3 * ls;
+                    nrm = n0 + 3 * ls;
+                    wide = true;
+                },
+                bad);
             if (lo == 0 && hi == 8 && !bad) {
                 storeSoa3(outP + v0 * 3, o.x, o.y, o.z);
                 storeSoa3(outN + v0 * 3, o.nx, o.ny, o.nz);
@@ -741,15 +684,9 @@ template <int K>
 M3G_AVX2 void skinRuns(const SkinningJob& j, std::size_t begin, std::size_t end) noexcept {
     const BlockContext c = blockContext(j);
     const bool packed = c.inPs == 3 && c.inNs == 3 && j.outPositionStride == 3 && j.outNormalStride == 3;
-    const InfluenceRun* r = findRun(j.runs, begin);
-    while (begin < end) {
-        const std::size_t offset = begin - r->start;
-        const std::size_t left = r->vertexCount - offset;
-        const std::size_t n = left < end - begin ? left : end - begin;
-        if (n > 0) skinRun<K>(j, c, packed, r->firstVertex, r->firstVertex + offset, n);
-        begin += n;
-        ++r;
-    }
+    RunPieces pieces(j.runs, begin, end);
+    std::size_t runFirst, first, count;
+    while (pieces.next(runFirst, first, count)) skinRun<K>(j, c, packed, runFirst, first, count);
 }
 
 template <bool Normals>

@@ -484,8 +484,8 @@ TEST(SkinningJob, ParallelRunIsBitIdenticalForAnyThreadCount) {
 }
 
 // Runs of vertices sharing their bones and weights (what addTransform ranges
-// give, and what the AVX2 kernel's shared-influence block path takes), runs
-// not aligned to its 8-vertex blocks (13 vertices), a list that is the whole
+// give), passed as plain vertex lists (the list kernel, not InfluenceRun),
+// runs not aligned to its 8-vertex blocks (13 vertices), a list that is the whole
 // mesh (consecutive) or every other vertex, and chunk grains that cut blocks:
 // every path agrees with the double reference, and the parallel runs are
 // bit-identical to run().
@@ -542,8 +542,7 @@ TEST(SkinningJob, SharedInfluenceRunsAgreeAndAreBitIdenticalAcrossChunks) {
 
 // Influence arrays that end right after the last vertex's used slots (stride
 // 4, 2 influences: the last vertex's slots 2 and 3 are not there): valid, and
-// every path gives the same results (the AVX2 shared-influence test reads all
-// four slots of eight vertices, so it must not run on that last block).
+// every path gives the same results (no path may read the missing slots).
 TEST(SkinningJob, ShortInfluenceArraysAreReadOnlyWhereValid) {
     const std::vector<PaletteEntry> pal = palette({translation(1, 2, 3), kRz90});
     const std::size_t n = 16;
