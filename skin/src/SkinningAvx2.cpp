@@ -295,6 +295,34 @@ M3G_AVX2_INLINE void storeSoa3(float* out, __m256 x, __m256 y, __m256 z) noexcep
     _mm256_storeu_ps(out + 16, _mm256_permute2f128_ps(r1, r2, 0x31));
 }
 
+/// Lanes from .. from+lanes-1 of x, y, z (within 0..7): floats [3 from,
+/// 3 (from + lanes)) of the 24 that storeSoa3(out) writes, and no others
+/// (a run's last block: its other lanes belong to other vertices, which
+/// must not be written).
+M3G_AVX2_INLINE void storeSoa3Lanes(float* out, __m256 x, __m256 y, __m256 z, std::size_t from,
+                                    std::size_t lanes) noexcept {
+    const __m256 xyLo = _mm256_unpacklo_ps(x, y);
+    const __m256 xyHi = _mm256_unpackhi_ps(x, y);
+    const __m256 zx = _mm256_shuffle_ps(z, x, _MM_SHUFFLE(3, 1, 2, 0));
+    const __m256 yz = _mm256_shuffle_ps(y, z, _MM_SHUFFLE(3, 1, 3, 1));
+    // The 24 floats in order: r0.lo r1.lo r2.lo r0.hi r1.hi r2.hi.
+    alignas(32) float t[24];
+    const __m256 r0 = _mm256_shuffle_ps(xyLo, zx, _MM_SHUFFLE(2, 0, 1, 0));
+    const __m256 r1 = _mm256_shuffle_ps(yz, xyHi, _MM_SHUFFLE(1, 0, 2, 0));
+    const __m256 r2 = _mm256_shuffle_ps(zx, yz, _MM_SHUFFLE(3, 1, 3, 1));
+    _mm256_store_ps(t, _mm256_permute2f128_ps(r0, r1, 0x20));
+    _mm256_store_ps(t + 8, _mm256_blend_ps(r2, r0, 0xF0));
+    _mm256_store_ps(t + 16, _mm256_permute2f128_ps(r1, r2, 0x31));
+    const std::size_t end = 3 * (from + lanes);
+    std::size_t i = 3 * from;
+    for (; i + 8 <= end; i += 8) _mm256_storeu_ps(out + i, _mm256_loadu_ps(t + i));
+    if (i + 4 <= end) {
+        _mm_storeu_ps(out + i, _mm_loadu_ps(t + i));
+        i += 4;
+    }
+    for (; i < end; ++i) out[i] = t[i];
+}
+
 /// One block's results: eight lanes of position and unit normal.
 struct Block {
     __m256 x, y, z, nx, ny, nz;
@@ -639,6 +667,17 @@ M3G_AVX2_INLINE void skinRunRows(const SkinningJob& j, const BlockContext& c, bo
             storeSoa3(outP + v * 3, o.x, o.y, o.z);
             storeSoa3(outN + v * 3, o.nx, o.ny, o.nz);
         }
+    }
+    if (packed && v < end && j.vertexCount >= 8) {
+        // The last (partial) block: loaded as the whole block of the eight
+        // vertices from v, or, at the end of the arrays, of the last eight
+        // (the ones outside the run are read, not written), and only the
+        // run's lanes stored.
+        const std::size_t base = v + 8 <= j.vertexCount ? v : j.vertexCount - 8;
+        const Block o = skinUniform(rows, c.inP + base * 3, c.inN + base * 3);
+        storeSoa3Lanes(outP + base * 3, o.x, o.y, o.z, v - base, end - v);
+        storeSoa3Lanes(outN + base * 3, o.nx, o.ny, o.nz, v - base, end - v);
+        return;
     }
     while (v < end) {
         const std::size_t lanes = end - v < 8 ? end - v : 8;

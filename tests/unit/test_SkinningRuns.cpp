@@ -226,6 +226,56 @@ TEST(SkinningJob, RunsAgreeWithReferenceAndListPathAndAreBitIdenticalAcrossChunk
     }
 }
 
+// Packed arrays: a run's last, partial block is loaded as a whole block
+// (from the run's vertex, or the arrays' last eight at their end) and must
+// store only the run's lanes. Runs of 5 (tail at the block start), 11 (a
+// block and a 3-vertex tail) and 5 at the very end of 40 vertices, and a
+// run in arrays of 6 vertices (shorter than a block): every run vertex is
+// translated by (1, 2, 3), every other output keeps its sentinel bits.
+TEST(SkinningJob, PartialRunBlocksWriteOnlyTheirVertices) {
+    const std::vector<PaletteEntry> pal =
+        m3gtest::paletteAtRestIdentity({{1, 0, 0, 1, 0, 1, 0, 2, 0, 0, 1, 3, 0, 0, 0, 1}});
+    for (std::size_t n : {40u, 6u}) {
+        const std::vector<InfluenceRun> runs =
+            n == 40 ? std::vector<InfluenceRun>{{3, 5, 0}, {20, 11, 5}, {35, 5, 16}} : std::vector<InfluenceRun>{{1, 4, 0}};
+        std::vector<bool> inRun(n, false);
+        for (const InfluenceRun& r : runs)
+            for (std::uint32_t v = r.firstVertex; v < r.firstVertex + r.vertexCount; ++v) inRun[v] = true;
+        std::vector<std::int32_t> bones;
+        std::vector<float> weights, in, nin;
+        for (std::size_t v = 0; v < n; ++v) {
+            bones.insert(bones.end(), {0, -1, -1, -1});
+            weights.insert(weights.end(), {1.0f, 0.0f, 0.0f, 0.0f});
+            const float x = static_cast<float>(v);
+            in.insert(in.end(), {x, -x, 0.5f * x});
+            nin.insert(nin.end(), {0.0f, 0.0f, 2.0f});
+        }
+        for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2}) {
+            if (!isaSupported(isa)) continue;
+            const float sentinel = -7.25f;
+            std::vector<float> out(n * 3, sentinel), nout(n * 3, sentinel);
+            SkinningJob job = m3gtest::arraysJob({}, runs, n, 1, 4, bones, weights, pal, in, nin, out, nout, isa);
+            ASSERT_TRUE(job.run()) << isaName(isa);
+            for (std::size_t v = 0; v < n; ++v) {
+                const std::string what = std::string(isaName(isa)) + ", " + std::to_string(n) + " vertices, vertex " +
+                                         std::to_string(v);
+                const float x = static_cast<float>(v);
+                if (inRun[v]) {
+                    EXPECT_NEAR(out[v * 3], x + 1, 1e-5f) << what;
+                    EXPECT_NEAR(out[v * 3 + 1], 2 - x, 1e-5f) << what;
+                    EXPECT_NEAR(out[v * 3 + 2], 0.5f * x + 3, 1e-5f) << what;
+                    EXPECT_NEAR(nout[v * 3 + 2], 1.0f, 1e-6f) << what;
+                } else {
+                    for (int c = 0; c < 3; ++c) {
+                        EXPECT_EQ(out[v * 3 + c], sentinel) << what << " written";
+                        EXPECT_EQ(nout[v * 3 + c], sentinel) << what << " normal written";
+                    }
+                }
+            }
+        }
+    }
+}
+
 // Interleaved arrays (positions at stride 4, normals at 5, outputs at 6 and
 // 7, with padding that must stay untouched) and arrays that end right after
 // the last vertex: the run path gathers and scatters lane by lane and agrees
