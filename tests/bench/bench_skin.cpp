@@ -94,7 +94,7 @@ BENCHMARK(BM_SkinRunLength)
     ->ArgNames({"vertices", "influences", "run", "variant"})
     ->ArgsProduct({{10000, 100000, 1000000},
                    {1, 4},
-                   {1, 4, 16, 256},
+                   {1, 4, 13, 16, 23, 256},
                    {static_cast<std::int64_t>(Variant::Sse2), static_cast<std::int64_t>(Variant::Avx2),
                     static_cast<std::int64_t>(Variant::Parallel)}})
     ->Unit(benchmark::kMicrosecond)
