@@ -188,11 +188,19 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         const auto& rest = mesh.atRestTransform(static_cast<int>(b)).rows();
         std::copy(rest.begin(), rest.end(), atRest_.begin() + b * 16);
     }
+    // The VertexBuffer's position scale and bias go into the palette's
+    // position rows (once per bone), so the kernels and the compute shader
+    // take the raw positions with scale 1 and bias 0 (no fold per run).
+    const bool hasPositions = vb.positions() != nullptr;
     skin::PaletteJob paletteJob;
     paletteJob.boneCount = bones;
     paletteJob.boneToMesh = boneMatrices_;
     paletteJob.atRest = atRest_;
     paletteJob.output = newPalette_;
+    if (hasPositions) {
+        paletteJob.positionScale = vb.positionScale();
+        paletteJob.positionBias = vb.positionBias();
+    }
     require(paletteJob.run(), "palette job");
     const bool paletteChanged = palette_.size() != bones ||
                                 (bones > 0 && std::memcmp(palette_.data(), newPalette_.data(),
@@ -201,7 +209,6 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
     palette_.swap(newPalette_);
     valid_ = false;
 
-    const bool hasPositions = vb.positions() != nullptr;
     // No position array: zeros (skinned like any point).
     skinInputs_.vertexCount = static_cast<int>(n);
     skinInputs_.positions = rawPositions_;
@@ -228,8 +235,11 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         job.boneIndices = table.bones();
         job.boneWeights = table.weights();
         job.palette = palette_;
-        job.positionScale = skinInputs_.positionScale;
-        job.positionBias = skinInputs_.positionBias;
+        // Influenced vertices: the palette applies the scale and bias.
+        if (c == 0) {
+            job.positionScale = skinInputs_.positionScale;
+            job.positionBias = skinInputs_.positionBias;
+        }
         job.inPositions = rawPositions_;
         job.outPositions = out_.positions;
         job.inNormals = baseNormals_;

@@ -45,8 +45,11 @@ struct DeformedVertices {
 /// the next update() or a change to the mesh.
 struct SkinInputs {
     int vertexCount = 0;
-    /// Raw xyz per vertex (zeros when the VertexBuffer has no positions);
-    /// the kernel applies positionScale and positionBias.
+    /// Raw xyz per vertex (zeros when the VertexBuffer has no positions).
+    /// A vertex without influence takes positionScale * p + positionBias
+    /// (the VertexBuffer's); the palette's position rows have them folded in
+    /// (PaletteJob::positionScale), so an influenced vertex takes the
+    /// blended rows times (p, 1).
     std::span<const float> positions;
     float positionScale = 1.0f;
     std::array<float, 3> positionBias{0.0f, 0.0f, 0.0f};

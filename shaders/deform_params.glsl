@@ -7,8 +7,8 @@ const uint NO_STREAM = 0xFFFFFFFFu;
 #define DEFORM_GROUP_SIZE 64
 
 struct SkinParams {
-    vec4 positionBias;     // xyz = VertexBuffer position bias
-    float positionScale;
+    vec4 positionBias;     // xyz = VertexBuffer position bias (vertices without bones;
+    float positionScale;   // the palette has both folded in for the others)
     uint vertexCount;
     uint tableVertices;    // vertices the influence table covers
     uint stride;           // influence slots per vertex (maxTransformsPerVertex)

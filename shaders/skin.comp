@@ -59,7 +59,10 @@ void main() {
     const uint v = gl_GlobalInvocationID.x;
     if (v >= p.vertexCount) return;
     const bool normals = p.normalsIn != NO_STREAM;
-    const vec3 pos = p.positionScale * load3(p.positionsIn, v) + p.positionBias.xyz;
+    // The palette has the position scale and bias folded into its position
+    // rows (skin::PaletteJob::positionScale): only a vertex without bones
+    // applies them here.
+    const vec3 raw = load3(p.positionsIn, v);
 
     // Blend the matrices over the filled slots (leading slots with a bone
     // index >= 0), then apply the blend once, as the CPU kernel does.
@@ -86,11 +89,11 @@ void main() {
         }
     }
     if (!influenced) {  // no bone: mesh space
-        store3(p.positionsOut, v, pos);
+        store3(p.positionsOut, v, p.positionScale * raw + p.positionBias.xyz);
         if (normals) store3(p.normalsOut, v, renormalise(load3(p.normalsIn, v)));
         return;
     }
-    const vec4 ph = vec4(pos, 1.0);
+    const vec4 ph = vec4(raw, 1.0);
     store3(p.positionsOut, v, vec3(dot(m0, ph), dot(m1, ph), dot(m2, ph)));
     if (normals) {
         const vec3 n = load3(p.normalsIn, v);

@@ -50,7 +50,14 @@ bool PaletteJob::run() const noexcept {
         const double scale = det != 0.0 && std::isfinite(det) ? 1.0 / det : 1.0;
         PaletteEntry& e = output[b];
         for (int i = 0; i < 3; ++i) {
-            for (int j = 0; j < 4; ++j) e.position[i * 4 + j] = static_cast<float>(m[i][j]);
+            // m (s p + bias): the columns scaled by s, m . bias added to the translation.
+            double t = m[i][3];
+            for (int j = 0; j < 3; ++j) {
+                const double bj = positionBias[static_cast<std::size_t>(j)];
+                if (bj != 0.0) t += m[i][j] * bj;  // (a non-finite row stays as it is for bias 0)
+            }
+            for (int j = 0; j < 3; ++j) e.position[i * 4 + j] = static_cast<float>(m[i][j] * positionScale);
+            e.position[i * 4 + 3] = static_cast<float>(t);
             for (int j = 0; j < 3; ++j) e.normal[i * 4 + j] = static_cast<float>(cof[i][j] * scale);
             e.normal[i * 4 + 3] = 0.0f;
         }

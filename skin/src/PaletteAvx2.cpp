@@ -37,9 +37,27 @@ M3G_AVX2 inline __m256 cross(__m256 u, __m256 v) noexcept {
     return _mm256_fmsub_ps(yzx(u), zxy(v), _mm256_mul_ps(zxy(u), yzx(v)));
 }
 
+/// The position rows m[0..2] of a pair of bones times the job's position
+/// scale and bias: m (s, s, s, 1) + (0, 0, 0, m . (bx, by, bz, 0)) per half.
+M3G_AVX2 inline void foldPositionScaleBias(const PaletteJob& job, __m256 (&m)[3]) noexcept {
+    const __m256 zero = _mm256_setzero_ps();
+    const float s = job.positionScale;
+    const __m256 scale = _mm256_setr_ps(s, s, s, 1.0f, s, s, s, 1.0f);
+    const __m256 bias = _mm256_setr_ps(job.positionBias[0], job.positionBias[1], job.positionBias[2], 0.0f,
+                                       job.positionBias[0], job.positionBias[1], job.positionBias[2], 0.0f);
+#pragma GCC unroll 3
+    for (int i = 0; i < 3; ++i) {
+        const __m256 p = _mm256_mul_ps(m[i], bias);
+        const __m256 p2 = _mm256_add_ps(p, _mm256_permute_ps(p, _MM_SHUFFLE(1, 0, 3, 2)));
+        const __m256 dot = _mm256_add_ps(p2, _mm256_permute_ps(p2, _MM_SHUFFLE(2, 3, 0, 1)));
+        m[i] = _mm256_fmadd_ps(m[i], scale, _mm256_blend_ps(zero, dot, 0x88));
+    }
+}
+
 /// Entries of bones `b0` (low half) and `b1` (high half; equal to b0 for
 /// the last bone of an odd count, then only `storeHigh` false).
-M3G_AVX2 inline void pairOfBones(const PaletteJob& job, std::size_t b0, std::size_t b1, bool storeHigh) noexcept {
+M3G_AVX2 inline void pairOfBones(const PaletteJob& job, std::size_t b0, std::size_t b1, bool storeHigh,
+                                 bool foldScaleBias) noexcept {
     const float* a0 = job.boneToMesh.data() + b0 * 16;
     const float* a1 = job.boneToMesh.data() + b1 * 16;
     const float* r0p = job.atRest.data() + b0 * 16;
@@ -72,6 +90,10 @@ M3G_AVX2 inline void pairOfBones(const PaletteJob& job, std::size_t b0, std::siz
     const __m256 one = _mm256_set1_ps(1.0f);
     const __m256 inv = _mm256_blendv_ps(one, _mm256_div_ps(one, det), usable);
     const __m256 n0 = _mm256_mul_ps(c0, inv), n1 = _mm256_mul_ps(c1, inv), n2 = _mm256_mul_ps(c2, inv);
+    // The position rows times the job's scale and bias: m[i] (s, s, s, 1)
+    // plus m[i] . (bx, by, bz, 0) in w (skipped for 1 and 0, which leave a
+    // non-finite row as it is rather than NaN).
+    if (foldScaleBias) foldPositionScaleBias(job, m);
     PaletteEntry& e0 = job.output[b0];
     _mm_storeu_ps(e0.position, _mm256_castps256_ps128(m[0]));
     _mm_storeu_ps(e0.position + 4, _mm256_castps256_ps128(m[1]));
@@ -92,9 +114,11 @@ M3G_AVX2 inline void pairOfBones(const PaletteJob& job, std::size_t b0, std::siz
 }  // namespace
 
 M3G_AVX2 void paletteAvx2(const PaletteJob& job) noexcept {
+    const bool fold = job.positionScale != 1.0f || job.positionBias[0] != 0.0f || job.positionBias[1] != 0.0f ||
+                      job.positionBias[2] != 0.0f;
     std::size_t b = 0;
-    for (; b + 2 <= job.boneCount; b += 2) pairOfBones(job, b, b + 1, true);
-    if (b < job.boneCount) pairOfBones(job, b, b, false);
+    for (; b + 2 <= job.boneCount; b += 2) pairOfBones(job, b, b + 1, true, fold);
+    if (b < job.boneCount) pairOfBones(job, b, b, false, fold);
 }
 
 }  // namespace m3g::skin::detail

@@ -211,6 +211,9 @@ struct BlockContext {
     std::size_t bones;
     __m256 scale;  // s s s 0 | s s s 0
     __m256 bias;   // bx by bz 1 | bx by bz 1
+    // Scale 1 and bias 0 (what the renderer passes, the palette having them
+    // folded in, PaletteJob::positionScale): runs skip foldScaleBias.
+    bool identity;
 };
 
 /// Entry `bone` of the palette, or the zero entry (setting `bad`) outside it.
@@ -554,6 +557,7 @@ M3G_AVX2_INLINE BlockContext blockContext(const SkinningJob& j) noexcept {
     c.bones = j.palette.size();
     const float s = j.positionScale;
     c.scale = _mm256_setr_ps(s, s, s, 0.0f, s, s, s, 0.0f);
+    c.identity = s == 1.0f && j.positionBias[0] == 0.0f && j.positionBias[1] == 0.0f && j.positionBias[2] == 0.0f;
     c.bias = _mm256_setr_ps(j.positionBias[0], j.positionBias[1], j.positionBias[2], 1.0f, j.positionBias[0],
                             j.positionBias[1], j.positionBias[2], 1.0f);
     return c;
@@ -691,11 +695,31 @@ M3G_AVX2_INLINE void skinRunRows(const SkinningJob& j, const BlockContext& c, bo
     }
 }
 
+/// A run's rows are applied from memory (a broadcast per use, or broadcast
+/// once for runs of 24 vertices and more).
+M3G_AVX2_INLINE void skinRunFrom(const SkinningJob& j, const BlockContext& c, bool packed, const float* rows,
+                                 std::size_t v, std::size_t count) noexcept {
+    if (count >= 24) {
+        UniformRows uniform;
+        broadcastRows(rows, uniform);
+        skinRunRows(j, c, packed, uniform, v, count);
+    } else {
+        skinRunRows(j, c, packed, RowBroadcasts{rows}, v, count);
+    }
+}
+
 template <int K>
 M3G_AVX2_INLINE void skinRun(const SkinningJob& j, const BlockContext& c, bool packed, std::size_t runFirst,
                              std::size_t v, std::size_t count) noexcept {
     const std::int32_t* bi = c.boneIndices + runFirst * c.stride;
     const float* bw = c.boneWeights + runFirst * c.stride;
+    const bool one = K == 1 || (K < 0 && c.count == 1);
+    if (one && c.identity && bw[0] == 1.0f && static_cast<std::uint32_t>(bi[0]) < c.bones) {
+        // One bone at weight 1, nothing to fold: the palette entry's 24
+        // floats are the run's rows (P0 P1 P2 N0 N1 N2, the blend's layout).
+        skinRunFrom(j, c, packed, reinterpret_cast<const float*>(c.palette + bi[0]), v, count);
+        return;
+    }
     unsigned bad = 0;
     __m256 y0, y1, y2;
     blendRows<K>(c, bi, bw, y0, y1, y2, bad);
@@ -704,18 +728,12 @@ M3G_AVX2_INLINE void skinRun(const SkinningJob& j, const BlockContext& c, bool p
         for (std::size_t i = 0; i < count; ++i) skinVertexChecked(j, v + i);
         return;
     }
-    foldScaleBias(c, y0, y1);
+    if (!c.identity) foldScaleBias(c, y0, y1);
     alignas(32) float rows[24];
     _mm256_store_ps(rows, y0);
     _mm256_store_ps(rows + 8, y1);
     _mm256_store_ps(rows + 16, y2);
-    if (count >= 24) {
-        UniformRows uniform;
-        broadcastRows(rows, uniform);
-        skinRunRows(j, c, packed, uniform, v, count);
-    } else {
-        skinRunRows(j, c, packed, RowBroadcasts{rows}, v, count);
-    }
+    skinRunFrom(j, c, packed, rows, v, count);
 }
 
 /// Positions [begin, end) of the job's run sequence.

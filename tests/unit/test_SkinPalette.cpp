@@ -184,3 +184,46 @@ TEST(SkinPalette, Avx2PathAgreesWithPlainLoop) {
             EXPECT_NEAR(m, n, 1e-6f * std::max(1.0f, std::abs(n))) << "bone " << b << " normal " << i;
         }
 }
+
+// The vertex positions' scale and bias folded into the position rows:
+// P (s p + b) = (P s) p + P b; the normal rows stay those of P. Rz(90)
+// (x -> y, y -> -x) then T(1, 2, 3), at rest T(0, 0, 1): P = [0 -1 0 1;
+// 1 0 0 2; 0 0 1 4]. With s = 2 and b = (1, 0, -1): P b = (0, 1, -1), so
+// the rows are [0 -2 0 1; 2 0 0 3; 0 0 2 3]; normals Rz(90). Both code
+// paths, and 1 / 0 leave the rows as they are.
+TEST(SkinPalette, PositionScaleAndBiasFoldIntoThePositionRows) {
+    const Mat a{0, -1, 0, 1, 1, 0, 0, 2, 0, 0, 1, 3, 0, 0, 0, 1};
+    const Mat r = translation(0, 0, 1);
+    for (Isa isa : {Isa::Scalar, Isa::Avx2}) {
+        if (!isaSupported(isa)) continue;
+        SCOPED_TRACE(m3g::skin::isaName(isa));
+        // Two bones (the AVX2 path's pair) with different folds per row.
+        const std::vector<float> boneToMesh = [&] {
+            std::vector<float> v(a.begin(), a.end());
+            v.insert(v.end(), kIdentity.begin(), kIdentity.end());
+            return v;
+        }();
+        const std::vector<float> atRest = [&] {
+            std::vector<float> v(r.begin(), r.end());
+            v.insert(v.end(), kIdentity.begin(), kIdentity.end());
+            return v;
+        }();
+        std::vector<PaletteEntry> out(2);
+        PaletteJob job;
+        job.boneCount = 2;
+        job.boneToMesh = boneToMesh;
+        job.atRest = atRest;
+        job.output = out;
+        job.isa = isa;
+        ASSERT_TRUE(job.run());
+        expectRows(out[0].position, {0, -1, 0, 1, 1, 0, 0, 2, 0, 0, 1, 4}, "unfolded position");
+        job.positionScale = 2.0f;
+        job.positionBias = {1.0f, 0.0f, -1.0f};
+        ASSERT_TRUE(job.run());
+        expectRows(out[0].position, {0, -2, 0, 1, 2, 0, 0, 3, 0, 0, 2, 3}, "position");
+        expectRows(out[0].normal, {0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0}, "normal");
+        // The identity bone: rows (2 I | b), normal I.
+        expectRows(out[1].position, {2, 0, 0, 1, 0, 2, 0, 0, 0, 0, 2, -1}, "second position");
+        expectRows(out[1].normal, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}, "second normal");
+    }
+}

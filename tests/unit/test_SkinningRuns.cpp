@@ -355,3 +355,82 @@ TEST(SkinningJob, RunWithABoneOutsideThePaletteSkipsThatSlot) {
         }
     }
 }
+
+// The renderer folds the position scale and bias into the palette
+// (PaletteJob::positionScale) and skins influenced vertices with scale 1
+// and bias 0: the same results as the unfolded palette with the job's
+// scale and bias, on every path (runs with 1..4 influences, runs of one
+// bone that read their rows straight from the palette, loose vertices).
+TEST(SkinningJob, PaletteWithFoldedScaleAndBiasGivesTheSameVertices) {
+    for (int k = 1; k <= 4; ++k) {
+        m3gtest::RandomMesh m(900u + static_cast<std::uint32_t>(k), 1203, 25, k, 13);
+        const auto pal = m3gtest::paletteOf(m);
+        std::vector<PaletteEntry> folded(pal.size());
+        PaletteJob pj;
+        pj.boneCount = folded.size();
+        pj.boneToMesh = m.boneToMesh;
+        pj.atRest = m.atRest;
+        pj.output = folded;
+        pj.positionScale = m.scale;
+        pj.positionBias = m.bias;
+        ASSERT_TRUE(pj.run());
+        InfluencePartition part;
+        part.build(m.table.bones(), m.table.weights(), m.n, m.vertices);
+        for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2}) {
+            if (!isaSupported(isa)) continue;
+            for (bool runs : {true, false}) {
+                const std::string what = std::string(isaName(isa)) + ", " + std::to_string(k) + " influences, " +
+                                         (runs ? "runs" : "lists");
+                std::vector<float> pos, nrm, fpos(m.vertices * 3, -9.0f), fnrm(m.vertices * 3, -9.0f);
+                m3gtest::skinAll(m, pal, isa, pos, nrm, nullptr, 4096, runs);
+                for (int c = 0; c <= part.maxInfluences(); ++c) {
+                    SkinningJob job = m3gtest::meshJob(m, runs ? part.loose(c) : part.group(c), c, folded, isa, fpos, fnrm);
+                    if (runs) job.runs = part.runs(c);
+                    if (c > 0) {
+                        job.positionScale = 1.0f;
+                        job.positionBias = {0.0f, 0.0f, 0.0f};
+                    }
+                    ASSERT_TRUE(job.run()) << what;
+                }
+                for (std::size_t i = 0; i < pos.size(); ++i) {
+                    ASSERT_NEAR(fpos[i], pos[i], 2e-5f * std::max(1.0f, std::abs(pos[i]))) << what << " " << i;
+                    ASSERT_NEAR(fnrm[i], nrm[i], 2e-6f) << what << " normal " << i;
+                }
+            }
+        }
+    }
+}
+
+// A run of one bone at scale 1 and bias 0 takes its rows straight from the
+// palette only at weight 1: at 0.5 (a job's weights are used as given)
+// the blend still scales them. Bone 0 = T(1, 2, 3); p = (x, 1, 0).
+TEST(SkinningJob, OneBoneRunAppliesItsWeight) {
+    const std::vector<PaletteEntry> pal =
+        m3gtest::paletteAtRestIdentity({{1, 0, 0, 1, 0, 1, 0, 2, 0, 0, 1, 3, 0, 0, 0, 1}});
+    const std::size_t n = 11;
+    for (float w : {1.0f, 0.5f}) {
+        std::vector<std::int32_t> bones;
+        std::vector<float> weights, in, nin;
+        for (std::size_t v = 0; v < n; ++v) {
+            bones.insert(bones.end(), {0, -1, -1, -1});
+            weights.insert(weights.end(), {w, 0.0f, 0.0f, 0.0f});
+            in.insert(in.end(), {static_cast<float>(v), 1.0f, 0.0f});
+            nin.insert(nin.end(), {0.0f, 3.0f, 0.0f});
+        }
+        const std::vector<InfluenceRun> runs{{0, static_cast<std::uint32_t>(n), 0}};
+        for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2}) {
+            if (!isaSupported(isa)) continue;
+            std::vector<float> out(n * 3), nout(n * 3);
+            SkinningJob job = m3gtest::arraysJob({}, runs, n, 1, 4, bones, weights, pal, in, nin, out, nout, isa);
+            ASSERT_TRUE(job.run());
+            for (std::size_t v = 0; v < n; ++v) {
+                const std::string what = std::string(isaName(isa)) + ", weight " + std::to_string(w) + ", vertex " +
+                                         std::to_string(v);
+                EXPECT_NEAR(out[v * 3], w * (static_cast<float>(v) + 1), 1e-5f) << what;
+                EXPECT_NEAR(out[v * 3 + 1], w * 3, 1e-5f) << what;
+                EXPECT_NEAR(out[v * 3 + 2], w * 3, 1e-5f) << what;
+                EXPECT_NEAR(nout[v * 3 + 1], 1.0f, 1e-6f) << what;
+            }
+        }
+    }
+}

@@ -196,7 +196,9 @@ void skinFloors(const detail::SkinInputs& in, std::vector<double>& positions, st
     for (std::size_t v = 0; v < n; ++v) {
         double p[3];
         const double nn[3] = {in.normals[v * 3], in.normals[v * 3 + 1], in.normals[v * 3 + 2]};
-        for (int c = 0; c < 3; ++c) p[c] = double(in.positionScale) * in.positions[v * 3 + c] + in.positionBias[c];
+        // Influenced: the palette (scale and bias folded in) times the raw
+        // position; no bone: the scaled position (set below).
+        for (int c = 0; c < 3; ++c) p[c] = in.positions[v * 3 + c];
         // Per output row: the sum of |terms| over influences and columns.
         double posRows[3] = {}, nrmRows[3] = {}, blended[3] = {};
         int used = 0;
@@ -216,6 +218,7 @@ void skinFloors(const detail::SkinInputs& in, std::vector<double>& positions, st
             }
         }
         if (used == 0) {  // mesh space: the scaled position and the renormalised normal
+            for (int c = 0; c < 3; ++c) p[c] = double(in.positionScale) * p[c] + in.positionBias[c];
             positions[v] = kFloorUlps * std::max({std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
             normals[v] = kFloorUlps;
             continue;

@@ -3,6 +3,7 @@
 // with the same layout, by the skinning compute shader).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <span>
 
@@ -15,9 +16,12 @@ namespace m3g::skin {
 /// (96 bytes, 16-byte aligned, no padding inside).
 struct alignas(16) PaletteEntry {
     /// Rows 0..2 of the affine matrix (bone -> mesh now) x (at rest:
-    /// mesh -> bone), element [r * 4 + c]; the implied row 3 is (0, 0, 0, 1).
+    /// mesh -> bone) x (the job's position scale and bias), element
+    /// [r * 4 + c]; the implied row 3 is (0, 0, 0, 1).
     float position[12];
-    /// Rows 0..2 of the inverse transpose of the upper 3x3 of `position`,
+    /// Rows 0..2 of the inverse transpose of the upper 3x3 of
+    /// (bone -> mesh now) x (at rest) (the scale and bias left out: they
+    /// apply to positions only),
     /// element [r * 4 + c], with [r * 4 + 3] = 0. For a singular 3x3 it holds
     /// the cofactor matrix instead (the inverse transpose times the
     /// determinant, which points the same way up to the sign), so that a
@@ -45,6 +49,13 @@ struct PaletteJob {
     std::span<const float> atRest;
     /// At least boneCount entries.
     std::span<PaletteEntry> output;
+    /// The vertex positions' scale and bias (VertexBuffer::setPositions),
+    /// folded into the position rows: P (s p + b) = (P s) p + P b, so that
+    /// the SkinningJob then takes the raw positions with scale 1 and bias 0.
+    /// Once per bone per frame instead of once per shared-influence run (a
+    /// run's fold was a fifth of a 16-vertex run's cost with 4 influences).
+    float positionScale = 1.0f;
+    std::array<float, 3> positionBias{0.0f, 0.0f, 0.0f};
     /// Which code path runs (Scalar or Avx2; Sse2 runs the plain loop); an
     /// unsupported one makes validate() false.
     Isa isa = Isa::Auto;
