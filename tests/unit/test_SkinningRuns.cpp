@@ -359,8 +359,8 @@ TEST(SkinningJob, RunWithABoneOutsideThePaletteSkipsThatSlot) {
 // The renderer folds the position scale and bias into the palette
 // (PaletteJob::positionScale) and skins influenced vertices with scale 1
 // and bias 0: the same results as the unfolded palette with the job's
-// scale and bias, on every path (runs with 1..4 influences, runs of one
-// bone that read their rows straight from the palette, loose vertices).
+// scale and bias, on every path (runs with 1..4 influences, loose
+// vertices).
 TEST(SkinningJob, PaletteWithFoldedScaleAndBiasGivesTheSameVertices) {
     for (int k = 1; k <= 4; ++k) {
         m3gtest::RandomMesh m(900u + static_cast<std::uint32_t>(k), 1203, 25, k, 13);
@@ -401,9 +401,8 @@ TEST(SkinningJob, PaletteWithFoldedScaleAndBiasGivesTheSameVertices) {
     }
 }
 
-// A run of one bone at scale 1 and bias 0 takes its rows straight from the
-// palette only at weight 1: at 0.5 (a job's weights are used as given)
-// the blend still scales them. Bone 0 = T(1, 2, 3); p = (x, 1, 0).
+// A run of one bone at scale 1 and bias 0 (no fold): its weight is used as
+// given, 1 or 0.5, on every path. Bone 0 = T(1, 2, 3); p = (x, 1, 0).
 TEST(SkinningJob, OneBoneRunAppliesItsWeight) {
     const std::vector<PaletteEntry> pal =
         m3gtest::paletteAtRestIdentity({{1, 0, 0, 1, 0, 1, 0, 2, 0, 0, 1, 3, 0, 0, 0, 1}});
