@@ -197,17 +197,13 @@ TEST(SkinPalette, PositionScaleAndBiasFoldIntoThePositionRows) {
     for (Isa isa : {Isa::Scalar, Isa::Avx2}) {
         if (!isaSupported(isa)) continue;
         SCOPED_TRACE(m3g::skin::isaName(isa));
-        // Two bones (the AVX2 path's pair) with different folds per row.
-        const std::vector<float> boneToMesh = [&] {
-            std::vector<float> v(a.begin(), a.end());
+        // Two bones (the AVX2 path's pair): m, then the identity.
+        auto thenIdentity = [](const Mat& m) {
+            std::vector<float> v(m.begin(), m.end());
             v.insert(v.end(), kIdentity.begin(), kIdentity.end());
             return v;
-        }();
-        const std::vector<float> atRest = [&] {
-            std::vector<float> v(r.begin(), r.end());
-            v.insert(v.end(), kIdentity.begin(), kIdentity.end());
-            return v;
-        }();
+        };
+        const std::vector<float> boneToMesh = thenIdentity(a), atRest = thenIdentity(r);
         std::vector<PaletteEntry> out(2);
         PaletteJob job;
         job.boneCount = 2;
