@@ -63,7 +63,10 @@ struct SkinningJob {
     std::span<const PaletteEntry> palette;
 
     /// Applied to the input positions before skinning (VertexBuffer's
-    /// position scale and bias).
+    /// position scale and bias). Faster left at 1 and 0 with the palette
+    /// made with them instead (PaletteJob::positionScale, as MeshDeformer
+    /// does): the run kernel then folds nothing per run. Vertices without
+    /// influence (influenceCount 0) still need them here.
     float positionScale = 1.0f;
     std::array<float, 3> positionBias{0.0f, 0.0f, 0.0f};
 
