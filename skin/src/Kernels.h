@@ -2,6 +2,7 @@
 // Each processes a sub-range of an already validated job.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -42,6 +43,13 @@ void paletteAvx2(const PaletteJob& job) noexcept;
 std::uint32_t maxIndexAvx2(const std::uint32_t* indices, std::size_t count) noexcept;
 void normalizeAvx2(float* xyz, std::size_t triples) noexcept;
 #endif
+
+/// True for a position scale of 1 and a bias of 0, which leave positions as
+/// they are: the palette then folds nothing into its rows, the run kernel
+/// nothing into a run's.
+inline bool isIdentityScaleBias(float scale, const std::array<float, 3>& bias) noexcept {
+    return scale == 1.0f && bias[0] == 0.0f && bias[1] == 0.0f && bias[2] == 0.0f;
+}
 
 /// The run holding position `position` of a validated run sequence (which
 /// has one: position < the runs' total count). Empty runs share the next

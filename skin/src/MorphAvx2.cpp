@@ -5,9 +5,8 @@
 
 #ifdef M3G_SKIN_X86
 
-#include <immintrin.h>
 
-#define M3G_AVX2 __attribute__((target("avx2,fma")))
+#include "Avx2.h"
 
 namespace m3g::skin::detail {
 

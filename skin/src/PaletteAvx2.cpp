@@ -15,18 +15,11 @@
 
 #include <cmath>
 
-#include <immintrin.h>
-
-#define M3G_AVX2 __attribute__((target("avx2,fma")))
+#include "Avx2.h"
 
 namespace m3g::skin::detail {
 
 namespace {
-
-/// Four floats at `lo` | four at `hi`.
-M3G_AVX2 inline __m256 load2(const float* lo, const float* hi) noexcept {
-    return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(lo)), _mm_loadu_ps(hi), 1);
-}
 
 /// (y, z, x, w) and (z, x, y, w) of a row, per 128-bit half.
 M3G_AVX2 inline __m256 yzx(__m256 v) noexcept { return _mm256_permute_ps(v, _MM_SHUFFLE(3, 0, 2, 1)); }
@@ -47,9 +40,7 @@ M3G_AVX2 inline void foldPositionScaleBias(const PaletteJob& job, __m256 (&m)[3]
                                        job.positionBias[0], job.positionBias[1], job.positionBias[2], 0.0f);
 #pragma GCC unroll 3
     for (int i = 0; i < 3; ++i) {
-        const __m256 p = _mm256_mul_ps(m[i], bias);
-        const __m256 p2 = _mm256_add_ps(p, _mm256_permute_ps(p, _MM_SHUFFLE(1, 0, 3, 2)));
-        const __m256 dot = _mm256_add_ps(p2, _mm256_permute_ps(p2, _MM_SHUFFLE(2, 3, 0, 1)));
+        const __m256 dot = sumPerHalf(_mm256_mul_ps(m[i], bias));
         m[i] = _mm256_fmadd_ps(m[i], scale, _mm256_blend_ps(zero, dot, 0x88));
     }
 }
@@ -63,12 +54,12 @@ M3G_AVX2 inline void pairOfBones(const PaletteJob& job, std::size_t b0, std::siz
     const float* r0p = job.atRest.data() + b0 * 16;
     const float* r1p = job.atRest.data() + b1 * 16;
     const __m256 zero = _mm256_setzero_ps();
-    const __m256 r0 = load2(r0p, r1p), r1 = load2(r0p + 4, r1p + 4), r2 = load2(r0p + 8, r1p + 8);
+    const __m256 r0 = halves(r0p, r1p), r1 = halves(r0p + 4, r1p + 4), r2 = halves(r0p + 8, r1p + 8);
     // Row i of a * r (both affine): a[i][0..2] . r's rows, plus a[i][3] in w.
     __m256 m[3];
 #pragma GCC unroll 3
     for (int i = 0; i < 3; ++i) {
-        const __m256 ai = load2(a0 + 4 * i, a1 + 4 * i);
+        const __m256 ai = halves(a0 + 4 * i, a1 + 4 * i);
         const __m256 t = _mm256_blend_ps(zero, ai, 0x88);  // (0, 0, 0, a[i][3]) per half
         m[i] = _mm256_fmadd_ps(_mm256_permute_ps(ai, 0xAA), r2,
                                _mm256_fmadd_ps(_mm256_permute_ps(ai, 0x55), r1,
@@ -80,9 +71,7 @@ M3G_AVX2 inline void pairOfBones(const PaletteJob& job, std::size_t b0, std::siz
     const __m256 c2 = _mm256_blend_ps(cross(m[0], m[1]), zero, 0x88);
     // det = m0 . c0 in every element of each half (w out: a non-finite
     // translation must not make the 3x3's determinant unusable).
-    const __m256 d = _mm256_blend_ps(_mm256_mul_ps(m[0], c0), zero, 0x88);
-    const __m256 d2 = _mm256_add_ps(d, _mm256_permute_ps(d, _MM_SHUFFLE(1, 0, 3, 2)));
-    const __m256 det = _mm256_add_ps(d2, _mm256_permute_ps(d2, _MM_SHUFFLE(2, 3, 0, 1)));
+    const __m256 det = sumPerHalf(_mm256_blend_ps(_mm256_mul_ps(m[0], c0), zero, 0x88));
     // 1 / det, or 1 where det is 0 or not finite.
     const __m256 absDet = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), det);
     const __m256 usable = _mm256_and_ps(_mm256_cmp_ps(absDet, zero, _CMP_GT_OQ),
@@ -114,8 +103,7 @@ M3G_AVX2 inline void pairOfBones(const PaletteJob& job, std::size_t b0, std::siz
 }  // namespace
 
 M3G_AVX2 void paletteAvx2(const PaletteJob& job) noexcept {
-    const bool fold = job.positionScale != 1.0f || job.positionBias[0] != 0.0f || job.positionBias[1] != 0.0f ||
-                      job.positionBias[2] != 0.0f;
+    const bool fold = !isIdentityScaleBias(job.positionScale, job.positionBias);
     std::size_t b = 0;
     for (; b + 2 <= job.boneCount; b += 2) pairOfBones(job, b, b + 1, true, fold);
     if (b < job.boneCount) pairOfBones(job, b, b, false, fold);

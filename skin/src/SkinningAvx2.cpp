@@ -1,6 +1,5 @@
-// AVX2 + FMA skinning, chosen at run time (Isa::Avx2). Only the functions
-// of this file carry the target attribute (no per-file -mavx2), so no inline
-// library function is ever compiled for AVX2 and shared with baseline code.
+// AVX2 + FMA skinning, chosen at run time (Isa::Avx2; Avx2.h says how the
+// target attribute is applied).
 //
 // Positions + normals with 1..4 (or more) influences run in blocks of eight
 // vertices (skinBlocks, described below); the zero-influence and
@@ -11,12 +10,7 @@
 
 #ifdef M3G_SKIN_X86
 
-#include <immintrin.h>
-
-#define M3G_AVX2 __attribute__((target("avx2,fma")))
-// Helpers of the block kernel: inlined whatever -O level (a call per vertex
-// returning three vectors through memory costs more than the work).
-#define M3G_AVX2_INLINE __attribute__((target("avx2,fma"), always_inline)) inline
+#include "Avx2.h"
 
 namespace m3g::skin::detail {
 
@@ -283,8 +277,9 @@ M3G_AVX2_INLINE __m256 quadSum(__m256 ab, __m256 cd) noexcept {
                          _mm256_shuffle_ps(ab, cd, _MM_SHUFFLE(3, 2, 3, 2)));
 }
 
-/// Eight lanes of x, y, z to 24 consecutive floats (xyz triples).
-M3G_AVX2_INLINE void storeSoa3(float* out, __m256 x, __m256 y, __m256 z) noexcept {
+/// Eight lanes of x, y, z as the 24 floats of their xyz triples, in three
+/// registers (floats 0-7, 8-15, 16-23).
+M3G_AVX2_INLINE void soa3ToXyz(__m256 x, __m256 y, __m256 z, __m256& o0, __m256& o1, __m256& o2) noexcept {
     // Per half (vertices 0-3 | 4-7): r0 = x0 y0 z0 x1, r1 = y1 z1 x2 y2, r2 = z2 x3 y3 z3.
     const __m256 xyLo = _mm256_unpacklo_ps(x, y);                            // x0 y0 x1 y1
     const __m256 xyHi = _mm256_unpackhi_ps(x, y);                            // x2 y2 x3 y3
@@ -293,9 +288,18 @@ M3G_AVX2_INLINE void storeSoa3(float* out, __m256 x, __m256 y, __m256 z) noexcep
     const __m256 r0 = _mm256_shuffle_ps(xyLo, zx, _MM_SHUFFLE(2, 0, 1, 0));  // x0 y0 z0 x1
     const __m256 r1 = _mm256_shuffle_ps(yz, xyHi, _MM_SHUFFLE(1, 0, 2, 0));  // y1 z1 x2 y2
     const __m256 r2 = _mm256_shuffle_ps(zx, yz, _MM_SHUFFLE(3, 1, 3, 1));    // z2 x3 y3 z3
-    _mm256_storeu_ps(out, _mm256_permute2f128_ps(r0, r1, 0x20));
-    _mm256_storeu_ps(out + 8, _mm256_permute2f128_ps(r2, r0, 0x30));
-    _mm256_storeu_ps(out + 16, _mm256_permute2f128_ps(r1, r2, 0x31));
+    o0 = _mm256_permute2f128_ps(r0, r1, 0x20);
+    o1 = _mm256_permute2f128_ps(r2, r0, 0x30);
+    o2 = _mm256_permute2f128_ps(r1, r2, 0x31);
+}
+
+/// Eight lanes of x, y, z to 24 consecutive floats (xyz triples).
+M3G_AVX2_INLINE void storeSoa3(float* out, __m256 x, __m256 y, __m256 z) noexcept {
+    __m256 o0, o1, o2;
+    soa3ToXyz(x, y, z, o0, o1, o2);
+    _mm256_storeu_ps(out, o0);
+    _mm256_storeu_ps(out + 8, o1);
+    _mm256_storeu_ps(out + 16, o2);
 }
 
 /// Lanes from .. from+lanes-1 of x, y, z (within 0..7): floats [3 from,
@@ -304,18 +308,12 @@ M3G_AVX2_INLINE void storeSoa3(float* out, __m256 x, __m256 y, __m256 z) noexcep
 /// must not be written).
 M3G_AVX2_INLINE void storeSoa3Lanes(float* out, __m256 x, __m256 y, __m256 z, std::size_t from,
                                     std::size_t lanes) noexcept {
-    const __m256 xyLo = _mm256_unpacklo_ps(x, y);
-    const __m256 xyHi = _mm256_unpackhi_ps(x, y);
-    const __m256 zx = _mm256_shuffle_ps(z, x, _MM_SHUFFLE(3, 1, 2, 0));
-    const __m256 yz = _mm256_shuffle_ps(y, z, _MM_SHUFFLE(3, 1, 3, 1));
-    // The 24 floats in order: r0.lo r1.lo r2.lo r0.hi r1.hi r2.hi.
     alignas(32) float t[24];
-    const __m256 r0 = _mm256_shuffle_ps(xyLo, zx, _MM_SHUFFLE(2, 0, 1, 0));
-    const __m256 r1 = _mm256_shuffle_ps(yz, xyHi, _MM_SHUFFLE(1, 0, 2, 0));
-    const __m256 r2 = _mm256_shuffle_ps(zx, yz, _MM_SHUFFLE(3, 1, 3, 1));
-    _mm256_store_ps(t, _mm256_permute2f128_ps(r0, r1, 0x20));
-    _mm256_store_ps(t + 8, _mm256_blend_ps(r2, r0, 0xF0));
-    _mm256_store_ps(t + 16, _mm256_permute2f128_ps(r1, r2, 0x31));
+    __m256 o0, o1, o2;
+    soa3ToXyz(x, y, z, o0, o1, o2);
+    _mm256_store_ps(t, o0);
+    _mm256_store_ps(t + 8, o1);
+    _mm256_store_ps(t + 16, o2);
     const std::size_t end = 3 * (from + lanes);
     std::size_t i = 3 * from;
     for (; i + 8 <= end; i += 8) _mm256_storeu_ps(out + i, _mm256_loadu_ps(t + i));
@@ -394,11 +392,6 @@ M3G_AVX2_INLINE Block skinBlock(const BlockContext& c, Lane&& lane, unsigned& ba
     return o;
 }
 
-/// Four floats at `lo` | four at `hi`.
-M3G_AVX2_INLINE __m256 halves(const float* lo, const float* hi) noexcept {
-    return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(lo)), _mm_loadu_ps(hi), 1);
-}
-
 /// Eight consecutive xyz triples (24 floats) as x, y, z lanes.
 M3G_AVX2_INLINE void loadSoa3(const float* p, __m256& x, __m256& y, __m256& z) noexcept {
     const __m256 m03 = halves(p, p + 12);      // x0 y0 z0 x1 | x4 y4 z4 x5
@@ -455,9 +448,7 @@ M3G_AVX2_INLINE __m256 rowTimes(const Rows& m, int r, __m256 a, __m256 b, __m256
 /// y * s, plus y . (b, 0) (per 128-bit half) in the elements of WMask.
 template <int WMask>
 M3G_AVX2_INLINE __m256 foldRows(__m256 y, __m256 s, __m256 bias) noexcept {
-    const __m256 d = _mm256_mul_ps(y, bias);
-    const __m256 d2 = _mm256_add_ps(d, _mm256_permute_ps(d, _MM_SHUFFLE(1, 0, 3, 2)));
-    const __m256 dot = _mm256_add_ps(d2, _mm256_permute_ps(d2, _MM_SHUFFLE(2, 3, 0, 1)));
+    const __m256 dot = sumPerHalf(_mm256_mul_ps(y, bias));
     return _mm256_add_ps(_mm256_mul_ps(y, s), _mm256_blend_ps(_mm256_setzero_ps(), dot, WMask));
 }
 
@@ -557,7 +548,7 @@ M3G_AVX2_INLINE BlockContext blockContext(const SkinningJob& j) noexcept {
     c.bones = j.palette.size();
     const float s = j.positionScale;
     c.scale = _mm256_setr_ps(s, s, s, 0.0f, s, s, s, 0.0f);
-    c.identity = s == 1.0f && j.positionBias[0] == 0.0f && j.positionBias[1] == 0.0f && j.positionBias[2] == 0.0f;
+    c.identity = isIdentityScaleBias(s, j.positionBias);
     c.bias = _mm256_setr_ps(j.positionBias[0], j.positionBias[1], j.positionBias[2], 1.0f, j.positionBias[0],
                             j.positionBias[1], j.positionBias[2], 1.0f);
     return c;
@@ -652,11 +643,10 @@ M3G_AVX2 void skinBlocks(const SkinningJob& j, std::size_t begin, std::size_t en
     }
 }
 
-/// Vertices [v, v + count) of the run whose first vertex is `runFirst`:
-/// the rows blended once from the run's first vertex, then every eight
-/// vertices by skinUniform (inputs loaded straight from packed arrays, or
-/// gathered lane by lane at other strides and for the last block, which
-/// repeats its last vertex).
+/// Vertices [v, v + count) of a run, eight at a time by skinUniform with
+/// the run's rows: inputs loaded straight from packed arrays (the last,
+/// partial block too, storing only its lanes), or gathered and scattered
+/// lane by lane at other strides and in arrays shorter than a block.
 template <class Rows>
 M3G_AVX2_INLINE void skinRunRows(const SkinningJob& j, const BlockContext& c, bool packed, const Rows& rows,
                                  std::size_t v, std::size_t count) noexcept {
@@ -664,9 +654,9 @@ M3G_AVX2_INLINE void skinRunRows(const SkinningJob& j, const BlockContext& c, bo
     float* outP = j.outPositions.data();
     float* outN = j.outNormals.data();
     if (packed) {
-        // loadSoa3 reads exactly the eight vertices' 24 floats.
-        const std::size_t direct = end < j.vertexCount ? end : j.vertexCount;
-        for (; v + 8 <= direct; v += 8) {
+        // loadSoa3 reads exactly the eight vertices' 24 floats (a validated
+        // run ends inside the arrays).
+        for (; v + 8 <= end; v += 8) {
             const Block o = skinUniform(rows, c.inP + v * 3, c.inN + v * 3);
             storeSoa3(outP + v * 3, o.x, o.y, o.z);
             storeSoa3(outN + v * 3, o.nx, o.ny, o.nz);
@@ -695,27 +685,11 @@ M3G_AVX2_INLINE void skinRunRows(const SkinningJob& j, const BlockContext& c, bo
     }
 }
 
-/// A run's rows are applied from memory (a broadcast per use, or broadcast
-/// once for runs of 24 vertices and more).
-M3G_AVX2_INLINE void skinRunFrom(const SkinningJob& j, const BlockContext& c, bool packed, const float* rows,
-                                 std::size_t v, std::size_t count) noexcept {
-    if (count >= 24) {
-        UniformRows uniform;
-        broadcastRows(rows, uniform);
-        skinRunRows(j, c, packed, uniform, v, count);
-    } else {
-        skinRunRows(j, c, packed, RowBroadcasts{rows}, v, count);
-    }
-}
-
 template <int K>
 M3G_AVX2_INLINE void skinRun(const SkinningJob& j, const BlockContext& c, bool packed, std::size_t runFirst,
                              std::size_t v, std::size_t count) noexcept {
     const std::int32_t* bi = c.boneIndices + runFirst * c.stride;
     const float* bw = c.boneWeights + runFirst * c.stride;
-    // (Reading a one-bone run's rows in place from its palette entry, with
-    // no blend and no fold, measured slower than this copy: 2.13 against
-    // 1.94 ns a vertex at 100k in runs of 16.)
     unsigned bad = 0;
     __m256 y0, y1, y2;
     blendRows<K>(c, bi, bw, y0, y1, y2, bad);
@@ -725,11 +699,20 @@ M3G_AVX2_INLINE void skinRun(const SkinningJob& j, const BlockContext& c, bool p
         return;
     }
     if (!c.identity) foldScaleBias(c, y0, y1);
+    // The rows are applied from this copy (reading a one-bone run's rows in
+    // place from its palette entry, with no blend and no fold, measured
+    // slower: 2.13 against 1.94 ns a vertex at 100k in runs of 16).
     alignas(32) float rows[24];
     _mm256_store_ps(rows, y0);
     _mm256_store_ps(rows + 8, y1);
     _mm256_store_ps(rows + 16, y2);
-    skinRunFrom(j, c, packed, rows, v, count);
+    if (count >= 24) {
+        UniformRows uniform;
+        broadcastRows(rows, uniform);
+        skinRunRows(j, c, packed, uniform, v, count);
+    } else {
+        skinRunRows(j, c, packed, RowBroadcasts{rows}, v, count);
+    }
 }
 
 /// Positions [begin, end) of the job's run sequence.
