@@ -28,16 +28,19 @@ void skinSse2(const SkinningJob& job, std::size_t begin, std::size_t end) noexce
 void skinAvx2(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept;
 /// Positions [begin, end) of an already validated job's run sequence, each
 /// run's entries blended once (from its first vertex's slots) and applied
-/// eight lanes at a time. False (nothing done) for the cases it does not
-/// cover: no normals, or no influence.
+/// eight (AVX2) or four (SSE2) lanes at a time. False (nothing done) for the
+/// cases they do not cover: no normals, or no influence.
 bool skinRunsAvx2(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept;
+bool skinRunsSse2(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept;
 void morphSse2(const MorphJob& job, std::size_t begin, std::size_t end) noexcept;
 void morphAvx2(const MorphJob& job, std::size_t begin, std::size_t end) noexcept;
 /// Renormalises `triples` xyz triples in place, 4 (8) lanes at a time; every
 /// triple goes through the same lane operations (partial blocks are padded).
 void normalizeSse2(float* xyz, std::size_t triples) noexcept;
-/// PaletteJob::run's loop on an already validated job, AVX2 + FMA doubles.
+/// PaletteJob::run's loop on an already validated job, in single
+/// precision: AVX2 + FMA two bones at a time, SSE2 one at a time.
 void paletteAvx2(const PaletteJob& job) noexcept;
+void paletteSse2(const PaletteJob& job) noexcept;
 /// The largest of `count` indices (0 for none), eight at a time: the
 /// vertex-list check of SkinningJob::validate on a large list.
 std::uint32_t maxIndexAvx2(const std::uint32_t* indices, std::size_t count) noexcept;

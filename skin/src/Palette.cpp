@@ -17,9 +17,10 @@ bool PaletteJob::validate() const noexcept {
 bool PaletteJob::run() const noexcept {
     if (!validate()) return false;
 #ifdef M3G_SKIN_X86
-    if (resolveIsa(isa) == Isa::Avx2) {
-        detail::paletteAvx2(*this);
-        return true;
+    switch (resolveIsa(isa)) {
+        case Isa::Avx2: detail::paletteAvx2(*this); return true;
+        case Isa::Sse2: detail::paletteSse2(*this); return true;
+        default: break;
     }
 #endif
     for (std::size_t b = 0; b < boneCount; ++b) {

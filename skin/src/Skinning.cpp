@@ -86,8 +86,9 @@ bool check(const SkinningJob& j, std::size_t* runVertices) noexcept {
 void runRuns(const SkinningJob& job, Isa isa, std::size_t begin, std::size_t end) noexcept {
 #ifdef M3G_SKIN_X86
     if (isa == Isa::Avx2 && detail::skinRunsAvx2(job, begin, end)) return;
+    if (isa == Isa::Sse2 && detail::skinRunsSse2(job, begin, end)) return;
 #endif
-    // Other paths: each run as a vertex list, a stack buffer at a time (each
+    // The scalar path, and runs without normals: each run as a vertex list, a stack buffer at a time (each
     // vertex of a valid run has the run's slots, which these paths read).
     std::uint32_t list[256];
     SkinningJob sub = job;

@@ -162,6 +162,233 @@ void skinN(const SkinningJob& j, std::size_t begin, std::size_t end) noexcept {
     }
 }
 
+// Shared-influence runs (InfluenceRun), four lanes at a time: a run's
+// entries are blended once (from its first vertex's slots), its 21 used
+// coefficients broadcast once into registers' worth of memory operands, and
+// each block of four consecutive vertices is transposed to x, y, z lanes,
+// multiplied and added (no FMA in SSE2), renormalised with the reciprocal
+// square root estimate plus one Newton step, and transposed back. The
+// AVX2 run kernel's structure at half the width.
+
+/// Four consecutive xyz triples (12 floats) as x, y, z lanes.
+inline void loadSoa3(const float* p, __m128& x, __m128& y, __m128& z) noexcept {
+    const __m128 m0 = _mm_loadu_ps(p);      // x0 y0 z0 x1
+    const __m128 m1 = _mm_loadu_ps(p + 4);  // y1 z1 x2 y2
+    const __m128 m2 = _mm_loadu_ps(p + 8);  // z2 x3 y3 z3
+    const __m128 xy = _mm_shuffle_ps(m1, m2, _MM_SHUFFLE(2, 1, 3, 2));  // x2 y2 x3 y3
+    const __m128 yz = _mm_shuffle_ps(m0, m1, _MM_SHUFFLE(1, 0, 2, 1));  // y0 z0 y1 z1
+    x = _mm_shuffle_ps(m0, xy, _MM_SHUFFLE(2, 0, 3, 0));
+    y = _mm_shuffle_ps(yz, xy, _MM_SHUFFLE(3, 1, 2, 0));
+    z = _mm_shuffle_ps(yz, m2, _MM_SHUFFLE(3, 0, 3, 1));
+}
+
+/// Four lanes of x, y, z as the 12 floats of their xyz triples.
+inline void soa3ToXyz(__m128 x, __m128 y, __m128 z, __m128& r0, __m128& r1, __m128& r2) noexcept {
+    const __m128 xyLo = _mm_unpacklo_ps(x, y);                        // x0 y0 x1 y1
+    const __m128 xyHi = _mm_unpackhi_ps(x, y);                        // x2 y2 x3 y3
+    const __m128 zx = _mm_shuffle_ps(z, x, _MM_SHUFFLE(3, 1, 2, 0));  // z0 z2 x1 x3
+    const __m128 yz = _mm_shuffle_ps(y, z, _MM_SHUFFLE(3, 1, 3, 1));  // y1 y3 z1 z3
+    r0 = _mm_shuffle_ps(xyLo, zx, _MM_SHUFFLE(2, 0, 1, 0));           // x0 y0 z0 x1
+    r1 = _mm_shuffle_ps(yz, xyHi, _MM_SHUFFLE(1, 0, 2, 0));           // y1 z1 x2 y2
+    r2 = _mm_shuffle_ps(zx, yz, _MM_SHUFFLE(3, 1, 3, 1));             // z2 x3 y3 z3
+}
+
+/// Lanes from .. from+lanes-1 of x, y, z (within 0..3) to floats
+/// [3 from, 3 (from + lanes)) of out, and no others (the block's other
+/// lanes belong to other vertices).
+inline void storeSoa3Lanes(float* out, __m128 x, __m128 y, __m128 z, std::size_t from, std::size_t lanes) noexcept {
+    alignas(16) float t[12];
+    __m128 r0, r1, r2;
+    soa3ToXyz(x, y, z, r0, r1, r2);
+    if (from == 0 && lanes == 4) {
+        _mm_storeu_ps(out, r0);
+        _mm_storeu_ps(out + 4, r1);
+        _mm_storeu_ps(out + 8, r2);
+        return;
+    }
+    _mm_store_ps(t, r0);
+    _mm_store_ps(t + 4, r1);
+    _mm_store_ps(t + 8, r2);
+    const std::size_t end = 3 * (from + lanes);
+    std::size_t i = 3 * from;
+    if (i + 4 <= end) {
+        _mm_storeu_ps(out + i, _mm_loadu_ps(t + i));
+        i += 4;
+    }
+    for (; i < end; ++i) out[i] = t[i];
+}
+
+/// mask ? a : b per element.
+inline __m128 select(__m128 mask, __m128 a, __m128 b) noexcept {
+    return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b));
+}
+
+/// 1 / |n| per lane, or 1 where |n|^2 is zero (or NaN): the reciprocal
+/// square root estimate and one Newton step (relative error about 2^-22),
+/// the exact 1 / sqrt for a lane whose |n|^2 is below FLT_MIN, where the
+/// estimate is not usable (per lane: a vertex's result never depends on its
+/// neighbours).
+inline __m128 inverseLength(__m128 nx, __m128 ny, __m128 nz) noexcept {
+    const __m128 one = _mm_set1_ps(1.0f);
+    const __m128 len2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(nx, nx), _mm_mul_ps(ny, ny)), _mm_mul_ps(nz, nz));
+    const __m128 positive = _mm_cmpgt_ps(len2, _mm_setzero_ps());
+    const __m128 tiny = _mm_and_ps(positive, _mm_cmplt_ps(len2, _mm_set1_ps(1.17549435e-38f)));
+    const __m128 y = _mm_rsqrt_ps(len2);
+    // y' = y * (3 - len2 * y * y) / 2
+    __m128 refined = _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(0.5f), y),
+                                _mm_sub_ps(_mm_set1_ps(3.0f), _mm_mul_ps(_mm_mul_ps(len2, y), y)));
+    if (_mm_movemask_ps(tiny) != 0) [[unlikely]]
+        refined = select(tiny, _mm_div_ps(one, _mm_sqrt_ps(len2)), refined);
+    return select(positive, refined, one);
+}
+
+/// A run's coefficients, each in all four lanes: P0 P1 P2 N0 N1 N2, four
+/// per row (the normal rows' fourth unused), so that the block loop's
+/// multiplies take them as memory operands.
+struct RunRows {
+    __m128 m[24];
+};
+
+/// Row r of m (coefficients 4r .. 4r+3) applied to lanes a, b, c, plus the
+/// fourth coefficient when Translate.
+template <bool Translate>
+inline __m128 rowTimes(const RunRows& m, int r, __m128 a, __m128 b, __m128 c) noexcept {
+    const __m128 ab = _mm_add_ps(_mm_mul_ps(m.m[4 * r], a), _mm_mul_ps(m.m[4 * r + 1], b));
+    const __m128 ct = Translate ? _mm_add_ps(_mm_mul_ps(m.m[4 * r + 2], c), m.m[4 * r + 3]) : _mm_mul_ps(m.m[4 * r + 2], c);
+    return _mm_add_ps(ab, ct);
+}
+
+/// Four vertices' positions and unit normals from their x, y, z lanes.
+struct Block4 {
+    __m128 x, y, z, nx, ny, nz;
+};
+inline Block4 skinBlock4(const RunRows& m, __m128 px, __m128 py, __m128 pz, __m128 nx, __m128 ny, __m128 nz) noexcept {
+    Block4 o;
+    o.x = rowTimes<true>(m, 0, px, py, pz);
+    o.y = rowTimes<true>(m, 1, px, py, pz);
+    o.z = rowTimes<true>(m, 2, px, py, pz);
+    const __m128 bx = rowTimes<false>(m, 3, nx, ny, nz);
+    const __m128 by = rowTimes<false>(m, 4, nx, ny, nz);
+    const __m128 bz = rowTimes<false>(m, 5, nx, ny, nz);
+    const __m128 inv = inverseLength(bx, by, bz);
+    o.nx = _mm_mul_ps(bx, inv);
+    o.ny = _mm_mul_ps(by, inv);
+    o.nz = _mm_mul_ps(bz, inv);
+    return o;
+}
+
+/// x, y, z lanes of vertices first .. first+lanes-1 (1..4, the last
+/// repeated beyond) at `stride` floats, reading three floats per vertex.
+inline void gatherSoa3(const float* base, std::size_t stride, std::size_t first, std::size_t lanes, __m128& x,
+                       __m128& y, __m128& z) noexcept {
+    __m128 q[4];
+    for (std::size_t l = 0; l < 4; ++l) q[l] = loadXyz0(base + (first + (l < lanes ? l : lanes - 1)) * stride);
+    _MM_TRANSPOSE4_PS(q[0], q[1], q[2], q[3]);
+    x = q[0], y = q[1], z = q[2];
+}
+
+/// Lanes 0 .. lanes-1 of x, y, z to the xyz triples of vertices first ..
+/// first+lanes-1 at `stride` floats (three floats written per vertex).
+inline void scatterSoa3(float* base, std::size_t stride, std::size_t first, std::size_t lanes, __m128 x, __m128 y,
+                        __m128 z) noexcept {
+    __m128 w = _mm_setzero_ps();
+    _MM_TRANSPOSE4_PS(x, y, z, w);
+    const __m128 q[4] = {x, y, z, w};
+    for (std::size_t l = 0; l < lanes; ++l) storeXyz(base + (first + l) * stride, q[l]);
+}
+
+/// Vertices [v, v + count) of a run whose first vertex is runFirst.
+template <int K>
+void skinRun(const SkinningJob& j, bool packed, std::size_t runFirst, std::size_t v, std::size_t count) noexcept {
+    const int slots = K > 0 ? K : j.influenceCount;
+    const auto stride = static_cast<std::size_t>(j.influenceStride);
+    const std::int32_t* bi = j.boneIndices.data() + runFirst * stride;
+    const float* bw = j.boneWeights.data() + runFirst * stride;
+    for (int k = 0; k < slots; ++k)
+        if (static_cast<std::uint32_t>(bi[k]) >= j.palette.size()) {
+            // A slot outside the palette: the checked formula, vertex by vertex.
+            for (std::size_t i = 0; i < count; ++i) skinVertexChecked(j, v + i);
+            return;
+        }
+    // The blended rows P0 P1 P2 N0 N1 N2 (one register each).
+    __m128 y[6];
+    {
+        const float* e = reinterpret_cast<const float*>(j.palette.data() + bi[0]);
+        const __m128 w = _mm_set1_ps(bw[0]);
+        for (int r = 0; r < 6; ++r) y[r] = _mm_mul_ps(w, _mm_load_ps(e + 4 * r));
+    }
+    for (int k = 1; k < slots; ++k) {
+        const float* e = reinterpret_cast<const float*>(j.palette.data() + bi[k]);
+        const __m128 w = _mm_set1_ps(bw[k]);
+        for (int r = 0; r < 6; ++r) y[r] = _mm_add_ps(y[r], _mm_mul_ps(w, _mm_load_ps(e + 4 * r)));
+    }
+    if (!isIdentityScaleBias(j.positionScale, j.positionBias)) {
+        // P (s p + b) = (P s) p + P b: columns times s, P b added to the translation.
+        const float s = j.positionScale;
+        const float* b = j.positionBias.data();
+        alignas(16) float p[12];
+        for (int r = 0; r < 3; ++r) _mm_store_ps(p + 4 * r, y[r]);
+        for (int r = 0; r < 3; ++r) {
+            float* row = p + 4 * r;
+            row[3] += row[0] * b[0] + row[1] * b[1] + row[2] * b[2];
+            row[0] *= s, row[1] *= s, row[2] *= s;
+            y[r] = _mm_load_ps(row);
+        }
+    }
+    alignas(16) float flat[24];
+    for (int r = 0; r < 6; ++r) _mm_store_ps(flat + 4 * r, y[r]);
+    RunRows rows;
+    for (int i = 0; i < 24; ++i) rows.m[i] = _mm_set1_ps(flat[i]);
+
+    const std::size_t end = v + count;
+    float* outP = j.outPositions.data();
+    float* outN = j.outNormals.data();
+    if (packed && j.vertexCount >= 4) {
+        const float* inP = j.inPositions.data();
+        const float* inN = j.inNormals.data();
+        __m128 px, py, pz, nx, ny, nz;
+        for (; v + 4 <= end; v += 4) {
+            loadSoa3(inP + v * 3, px, py, pz);
+            loadSoa3(inN + v * 3, nx, ny, nz);
+            const Block4 o = skinBlock4(rows, px, py, pz, nx, ny, nz);
+            storeSoa3Lanes(outP + v * 3, o.x, o.y, o.z, 0, 4);
+            storeSoa3Lanes(outN + v * 3, o.nx, o.ny, o.nz, 0, 4);
+        }
+        if (v < end) {
+            // The last, partial block: the four vertices from v, or the
+            // arrays' last four (a validated run ends inside the arrays),
+            // only the run's lanes stored.
+            const std::size_t base = v + 4 <= j.vertexCount ? v : j.vertexCount - 4;
+            loadSoa3(inP + base * 3, px, py, pz);
+            loadSoa3(inN + base * 3, nx, ny, nz);
+            const Block4 o = skinBlock4(rows, px, py, pz, nx, ny, nz);
+            storeSoa3Lanes(outP + base * 3, o.x, o.y, o.z, v - base, end - v);
+            storeSoa3Lanes(outN + base * 3, o.nx, o.ny, o.nz, v - base, end - v);
+        }
+        return;
+    }
+    // Other strides, or arrays shorter than a block: lane by lane.
+    while (v < end) {
+        const std::size_t lanes = end - v < 4 ? end - v : 4;
+        __m128 px, py, pz, nx, ny, nz;
+        gatherSoa3(j.inPositions.data(), j.inPositionStride, v, lanes, px, py, pz);
+        gatherSoa3(j.inNormals.data(), j.inNormalStride, v, lanes, nx, ny, nz);
+        const Block4 o = skinBlock4(rows, px, py, pz, nx, ny, nz);
+        scatterSoa3(outP, j.outPositionStride, v, lanes, o.x, o.y, o.z);
+        scatterSoa3(outN, j.outNormalStride, v, lanes, o.nx, o.ny, o.nz);
+        v += lanes;
+    }
+}
+
+template <int K>
+void skinRuns(const SkinningJob& j, std::size_t begin, std::size_t end) noexcept {
+    const bool packed =
+        j.inPositionStride == 3 && j.inNormalStride == 3 && j.outPositionStride == 3 && j.outNormalStride == 3;
+    RunPieces pieces(j.runs, begin, end);
+    std::size_t runFirst, first, count;
+    while (pieces.next(runFirst, first, count)) skinRun<K>(j, packed, runFirst, first, count);
+}
+
 }  // namespace
 
 void skinSse2(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept {
@@ -169,6 +396,18 @@ void skinSse2(const SkinningJob& job, std::size_t begin, std::size_t end) noexce
         skinN<false>(job, begin, end);
     else
         skinN<true>(job, begin, end);
+}
+
+bool skinRunsSse2(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept {
+    if (job.inNormals.empty()) return false;
+    switch (job.influenceCount) {
+        case 0: return false;
+        case 1: skinRuns<1>(job, begin, end); return true;
+        case 2: skinRuns<2>(job, begin, end); return true;
+        case 3: skinRuns<3>(job, begin, end); return true;
+        case 4: skinRuns<4>(job, begin, end); return true;
+        default: skinRuns<-1>(job, begin, end); return true;
+    }
 }
 
 }  // namespace m3g::skin::detail

@@ -127,10 +127,10 @@ BENCHMARK(BM_SkinStreamRoof)
     ->UseRealTime();
 
 // The palette alone (one entry per bone per frame): what a small mesh's
-// frame pays before its first vertex. Scalar (double) and AVX2 (float).
+// frame pays before its first vertex. Scalar (double), SSE2 and AVX2 (float).
 void BM_SkinPalette(benchmark::State& state) {
     const auto bones = static_cast<std::size_t>(state.range(0));
-    const auto isa = state.range(1) != 0 ? m3g::skin::Isa::Avx2 : m3g::skin::Isa::Scalar;
+    const auto isa = static_cast<m3g::skin::Isa>(state.range(1));
     auto& w = skinWorkload(100, 1, static_cast<int>(bones));
     m3g::skin::PaletteJob job;
     job.boneCount = bones;
@@ -150,7 +150,12 @@ void BM_SkinPalette(benchmark::State& state) {
     state.counters["per_bone"] = benchmark::Counter(static_cast<double>(bones), benchmark::Counter::kIsIterationInvariantRate |
                                                                                    benchmark::Counter::kInvert);
 }
-BENCHMARK(BM_SkinPalette)->ArgNames({"bones", "avx2"})->ArgsProduct({{20, 60}, {0, 1}})->Unit(benchmark::kNanosecond);
+BENCHMARK(BM_SkinPalette)
+    ->ArgNames({"bones", "isa"})
+    ->ArgsProduct({{20, 60},
+                   {static_cast<std::int64_t>(m3g::skin::Isa::Scalar), static_cast<std::int64_t>(m3g::skin::Isa::Sse2),
+                    static_cast<std::int64_t>(m3g::skin::Isa::Avx2)}})
+    ->Unit(benchmark::kNanosecond);
 
 void BM_Morph(benchmark::State& state) {
     const auto v = static_cast<std::size_t>(state.range(0));

@@ -146,14 +146,15 @@ TEST(SkinPalette, SeveralBonesAndTheBottomRowIsIgnored) {
     expectRows(out[1].position, {1, 0, 0, 0, 0, 1, 0, 7, 0, 0, 1, 0}, "bone 1");
 }
 
-// The AVX2 path (FMAs on doubles, rows as vectors) against the plain loop:
+// The SIMD paths (single precision, rows as vectors: AVX2 with FMAs two
+// bones at a time, SSE2 one at a time) against the plain double loop:
 // random affine bones, a singular one (scaled to a plane) and a translation
-// only; the entries agree to float rounding.
-TEST(SkinPalette, Avx2PathAgreesWithPlainLoop) {
-    if (!isaSupported(Isa::Avx2)) GTEST_SKIP() << "avx2 not supported by this CPU";
+// only, an odd count (AVX2's last bone alone); the entries agree to float
+// rounding.
+TEST(SkinPalette, SimdPathsAgreeWithPlainLoop) {
     std::mt19937 rng(11);
     std::vector<float> a, r;
-    for (int b = 0; b < 40; ++b) {
+    for (int b = 0; b < 41; ++b) {
         const auto x = m3gtest::randomAffine(rng), y = m3gtest::randomAffine(rng);
         a.insert(a.end(), x.begin(), x.end());
         r.insert(r.end(), y.begin(), y.end());
@@ -165,7 +166,8 @@ TEST(SkinPalette, Avx2PathAgreesWithPlainLoop) {
     a.insert(a.end(), std::begin(moved), std::end(moved));
     r.insert(r.end(), std::begin(flat), std::end(flat));
     const std::size_t bones = a.size() / 16;
-    std::vector<PaletteEntry> plain(bones), avx2(bones);
+    ASSERT_EQ(bones % 2, 1u);
+    std::vector<PaletteEntry> plain(bones);
     PaletteJob job;
     job.boneCount = bones;
     job.boneToMesh = a;
@@ -173,28 +175,33 @@ TEST(SkinPalette, Avx2PathAgreesWithPlainLoop) {
     job.output = plain;
     job.isa = Isa::Scalar;
     ASSERT_TRUE(job.run());
-    job.output = avx2;
-    job.isa = Isa::Avx2;
-    ASSERT_TRUE(job.run());
-    for (std::size_t b = 0; b < bones; ++b)
-        for (int i = 0; i < 12; ++i) {
-            const float p = plain[b].position[i], q = avx2[b].position[i];
-            EXPECT_NEAR(q, p, 1e-6f * std::max(1.0f, std::abs(p))) << "bone " << b << " position " << i;
-            const float n = plain[b].normal[i], m = avx2[b].normal[i];
-            EXPECT_NEAR(m, n, 1e-6f * std::max(1.0f, std::abs(n))) << "bone " << b << " normal " << i;
-        }
+    for (Isa isa : {Isa::Sse2, Isa::Avx2}) {
+        if (!isaSupported(isa)) continue;
+        SCOPED_TRACE(m3g::skin::isaName(isa));
+        std::vector<PaletteEntry> simd(bones);
+        job.output = simd;
+        job.isa = isa;
+        ASSERT_TRUE(job.run());
+        for (std::size_t b = 0; b < bones; ++b)
+            for (int i = 0; i < 12; ++i) {
+                const float p = plain[b].position[i], q = simd[b].position[i];
+                EXPECT_NEAR(q, p, 1e-6f * std::max(1.0f, std::abs(p))) << "bone " << b << " position " << i;
+                const float n = plain[b].normal[i], m = simd[b].normal[i];
+                EXPECT_NEAR(m, n, 1e-6f * std::max(1.0f, std::abs(n))) << "bone " << b << " normal " << i;
+            }
+    }
 }
 
 // The vertex positions' scale and bias folded into the position rows:
 // P (s p + b) = (P s) p + P b; the normal rows stay those of P. Rz(90)
 // (x -> y, y -> -x) then T(1, 2, 3), at rest T(0, 0, 1): P = [0 -1 0 1;
 // 1 0 0 2; 0 0 1 4]. With s = 2 and b = (1, 0, -1): P b = (0, 1, -1), so
-// the rows are [0 -2 0 1; 2 0 0 3; 0 0 2 3]; normals Rz(90). Both code
-// paths, and 1 / 0 leave the rows as they are.
+// the rows are [0 -2 0 1; 2 0 0 3; 0 0 2 3]; normals Rz(90). Every code
+// path, and 1 / 0 leave the rows as they are.
 TEST(SkinPalette, PositionScaleAndBiasFoldIntoThePositionRows) {
     const Mat a{0, -1, 0, 1, 1, 0, 0, 2, 0, 0, 1, 3, 0, 0, 0, 1};
     const Mat r = translation(0, 0, 1);
-    for (Isa isa : {Isa::Scalar, Isa::Avx2}) {
+    for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2}) {
         if (!isaSupported(isa)) continue;
         SCOPED_TRACE(m3g::skin::isaName(isa));
         // Two bones (the AVX2 path's pair): m, then the identity.

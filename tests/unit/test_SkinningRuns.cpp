@@ -229,15 +229,17 @@ TEST(SkinningJob, RunsAgreeWithReferenceAndListPathAndAreBitIdenticalAcrossChunk
 // Packed arrays: a run's last, partial block is loaded as a whole block
 // (from the run's vertex, or the arrays' last eight at their end) and must
 // store only the run's lanes. Runs of 5 (tail at the block start), 11 (a
-// block and a 3-vertex tail) and 5 at the very end of 40 vertices, and a
-// run in arrays of 6 vertices (shorter than a block): every run vertex is
+// block and a 3-vertex tail) and 5 at the very end of 40 vertices, a run
+// in arrays of 6 vertices (shorter than an AVX2 block) and one of 2 at the
+// end of 3 vertices (shorter than an SSE2 block): every run vertex is
 // translated by (1, 2, 3), every other output keeps its sentinel bits.
 TEST(SkinningJob, PartialRunBlocksWriteOnlyTheirVertices) {
     const std::vector<PaletteEntry> pal =
         m3gtest::paletteAtRestIdentity({{1, 0, 0, 1, 0, 1, 0, 2, 0, 0, 1, 3, 0, 0, 0, 1}});
-    for (std::size_t n : {40u, 6u}) {
-        const std::vector<InfluenceRun> runs =
-            n == 40 ? std::vector<InfluenceRun>{{3, 5, 0}, {20, 11, 5}, {35, 5, 16}} : std::vector<InfluenceRun>{{1, 4, 0}};
+    for (std::size_t n : {40u, 6u, 3u}) {
+        const std::vector<InfluenceRun> runs = n == 40  ? std::vector<InfluenceRun>{{3, 5, 0}, {20, 11, 5}, {35, 5, 16}}
+                                               : n == 6 ? std::vector<InfluenceRun>{{1, 4, 0}}
+                                                        : std::vector<InfluenceRun>{{1, 2, 0}};
         std::vector<bool> inRun(n, false);
         for (const InfluenceRun& r : runs)
             for (std::uint32_t v = r.firstVertex; v < r.firstVertex + r.vertexCount; ++v) inRun[v] = true;

@@ -35,11 +35,12 @@ static_assert(sizeof(PaletteEntry) == 96, "PaletteEntry must match the std430 la
 /// Both inputs are 4x4 matrices in M3G's Transform order (row-major, element
 /// index row * 4 + col), 16 floats per bone. Only their top three rows are
 /// used: node transforms are affine (Node::setTransform rejects a W row other
-/// than 0 0 0 1), so the products are too. The scalar and SSE2 paths compute
-/// the product and the inverse in double precision and round once; the AVX2
-/// path computes them in single precision with FMAs, two bones at a time
-/// (within a few units in the last place of the double result for
-/// well-conditioned bones: the palette is most of a small mesh's frame).
+/// than 0 0 0 1), so the products are too. The scalar path computes the
+/// product and the inverse in double precision and rounds once; the SIMD
+/// paths compute them in single precision (AVX2 with FMAs two bones at a
+/// time, SSE2 one bone at a time), within a few units in the last place of
+/// the double result for well-conditioned bones: the palette is most of a
+/// small mesh's frame.
 struct PaletteJob {
     /// Number of entries to compute.
     std::size_t boneCount = 0;
@@ -56,7 +57,7 @@ struct PaletteJob {
     /// run's fold was a fifth of a 16-vertex run's cost with 4 influences).
     float positionScale = 1.0f;
     std::array<float, 3> positionBias{0.0f, 0.0f, 0.0f};
-    /// Which code path runs (Scalar or Avx2; Sse2 runs the plain loop); an
+    /// Which code path runs (Scalar, Sse2 or Avx2); an
     /// unsupported one makes validate() false.
     Isa isa = Isa::Auto;
 
