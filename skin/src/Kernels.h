@@ -32,11 +32,12 @@ void skinAvx2(const SkinningJob& job, std::size_t begin, std::size_t end) noexce
 /// cases they do not cover: no normals, or no influence.
 bool skinRunsAvx2(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept;
 bool skinRunsSse2(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept;
+/// Elements [begin, end) of a validated MorphJob; with job.normalize, each
+/// xyz triple renormalised before it is stored (four or eight lanes at a
+/// time; the last triples in a padded block, through the same lane
+/// operations).
 void morphSse2(const MorphJob& job, std::size_t begin, std::size_t end) noexcept;
 void morphAvx2(const MorphJob& job, std::size_t begin, std::size_t end) noexcept;
-/// Renormalises `triples` xyz triples in place, 4 (8) lanes at a time; every
-/// triple goes through the same lane operations (partial blocks are padded).
-void normalizeSse2(float* xyz, std::size_t triples) noexcept;
 /// PaletteJob::run's loop on an already validated job, in single
 /// precision: AVX2 + FMA two bones at a time, SSE2 one at a time.
 void paletteAvx2(const PaletteJob& job) noexcept;
@@ -44,7 +45,6 @@ void paletteSse2(const PaletteJob& job) noexcept;
 /// The largest of `count` indices (0 for none), eight at a time: the
 /// vertex-list check of SkinningJob::validate on a large list.
 std::uint32_t maxIndexAvx2(const std::uint32_t* indices, std::size_t count) noexcept;
-void normalizeAvx2(float* xyz, std::size_t triples) noexcept;
 #endif
 
 /// True for a position scale of 1 and a bias of 0, which leave positions as

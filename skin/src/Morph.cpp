@@ -9,22 +9,16 @@ namespace m3g::skin {
 namespace {
 
 void runRange(const MorphJob& job, Isa isa, std::size_t begin, std::size_t end) noexcept {
-    float* out = job.output.data();
     switch (isa) {
 #ifdef M3G_SKIN_X86
-        case Isa::Sse2:
-            detail::morphSse2(job, begin, end);
-            if (job.normalize) detail::normalizeSse2(out + begin, (end - begin) / 3);
-            return;
-        case Isa::Avx2:
-            detail::morphAvx2(job, begin, end);
-            if (job.normalize) detail::normalizeAvx2(out + begin, (end - begin) / 3);
-            return;
+        // The SIMD paths renormalise each block before storing it.
+        case Isa::Sse2: detail::morphSse2(job, begin, end); return;
+        case Isa::Avx2: detail::morphAvx2(job, begin, end); return;
 #endif
         default:
             detail::morphScalar(job, begin, end);
             if (job.normalize)
-                for (std::size_t i = begin; i < end; i += 3) detail::normalize3(out + i);
+                for (std::size_t i = begin; i < end; i += 3) detail::normalize3(job.output.data() + i);
             return;
     }
 }

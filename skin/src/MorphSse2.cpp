@@ -1,11 +1,13 @@
 // SSE2 morphing: 16 floats per step (four accumulators), the targets looped
 // inside so that each output element is read and written once. The tail uses
 // the same single-lane operations, so any split gives identical results.
+// Normals (MorphJob::normalize) are blended 12 floats (four triples) per
+// step and renormalised before they are stored.
 #include "Kernels.h"
 
 #ifdef M3G_SKIN_X86
 
-#include <emmintrin.h>
+#include "Sse2.h"
 
 namespace m3g::skin::detail {
 
@@ -14,78 +16,85 @@ inline __m128 clampPs(__m128 v, __m128 lo, __m128 hi) noexcept { return _mm_max_
 inline __m128 clampSs(__m128 v, __m128 lo, __m128 hi) noexcept { return _mm_max_ss(_mm_min_ss(v, hi), lo); }
 }  // namespace
 
+namespace {
+
+/// One element's blend on a single lane: the vector lanes' operations.
+inline float blendOne(const MorphJob& j, std::size_t i, __m128 lo, __m128 hi) noexcept {
+    const __m128 b = _mm_load_ss(j.base.data() + i);
+    __m128 a = b;
+    for (std::size_t t = 0; t < j.targets.size(); ++t)
+        a = _mm_add_ss(a, _mm_mul_ss(_mm_set_ss(j.weights[t]), _mm_sub_ss(_mm_load_ss(j.targets[t].data() + i), b)));
+    if (j.clamp) a = clampSs(a, lo, hi);
+    return _mm_cvtss_f32(a);
+}
+
+/// Elements [i, i + 4 N) blended (and clamped) into a[0 .. N).
+template <int N>
+inline void blendBlock(const MorphJob& j, std::size_t i, __m128 lo, __m128 hi, __m128 (&a)[N]) noexcept {
+    __m128 b[N];
+#pragma GCC unroll 4
+    for (int k = 0; k < N; ++k) a[k] = b[k] = _mm_loadu_ps(j.base.data() + i + 4 * k);
+    for (std::size_t t = 0; t < j.targets.size(); ++t) {
+        const float* tp = j.targets[t].data() + i;
+        const __m128 w = _mm_set1_ps(j.weights[t]);
+#pragma GCC unroll 4
+        for (int k = 0; k < N; ++k) a[k] = _mm_add_ps(a[k], _mm_mul_ps(w, _mm_sub_ps(_mm_loadu_ps(tp + 4 * k), b[k])));
+    }
+    if (j.clamp)
+#pragma GCC unroll 4
+        for (int k = 0; k < N; ++k) a[k] = clampPs(a[k], lo, hi);
+}
+
+/// Four blended xyz triples (12 floats in three registers) renormalised and
+/// stored at out (inverseLength: 1 for a zero or NaN length, which leaves
+/// the triple as it is).
+inline void storeNormalized(float* out, const __m128 (&a)[3]) noexcept {
+    // a[0] = x0 y0 z0 x1, a[1] = y1 z1 x2 y2, a[2] = z2 x3 y3 z3: loadSoa3's
+    // shuffles on registers.
+    const __m128 xy = _mm_shuffle_ps(a[1], a[2], _MM_SHUFFLE(2, 1, 3, 2));
+    const __m128 yz = _mm_shuffle_ps(a[0], a[1], _MM_SHUFFLE(1, 0, 2, 1));
+    const __m128 x = _mm_shuffle_ps(a[0], xy, _MM_SHUFFLE(2, 0, 3, 0));
+    const __m128 y = _mm_shuffle_ps(yz, xy, _MM_SHUFFLE(3, 1, 2, 0));
+    const __m128 z = _mm_shuffle_ps(yz, a[2], _MM_SHUFFLE(3, 0, 3, 1));
+    const __m128 inv = inverseLength(x, y, z);
+    __m128 r0, r1, r2;
+    soa3ToXyz(_mm_mul_ps(x, inv), _mm_mul_ps(y, inv), _mm_mul_ps(z, inv), r0, r1, r2);
+    _mm_storeu_ps(out, r0);
+    _mm_storeu_ps(out + 4, r1);
+    _mm_storeu_ps(out + 8, r2);
+}
+
+}  // namespace
+
 void morphSse2(const MorphJob& j, std::size_t begin, std::size_t end) noexcept {
-    const std::size_t targets = j.targets.size();
-    const float* base = j.base.data();
     float* out = j.output.data();
     const __m128 lo = _mm_set1_ps(j.clampMin), hi = _mm_set1_ps(j.clampMax);
     std::size_t i = begin;
+    if (j.normalize) {
+        // Blended and renormalised in one pass, four triples per step.
+        for (; i + 12 <= end; i += 12) {
+            __m128 a[3];
+            blendBlock<3>(j, i, lo, hi, a);
+            storeNormalized(out + i, a);
+        }
+        if (i < end) {
+            // The last triples (end - i < 12, a multiple of 3), blended one
+            // lane at a time and renormalised in a block padded with (1, 0, 0).
+            alignas(16) float block[12] = {1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0};
+            for (std::size_t k = 0; k < end - i; ++k) block[k] = blendOne(j, i + k, lo, hi);
+            const __m128 a[3] = {_mm_load_ps(block), _mm_load_ps(block + 4), _mm_load_ps(block + 8)};
+            storeNormalized(block, a);
+            for (std::size_t k = 0; k < end - i; ++k) out[i + k] = block[k];
+        }
+        return;
+    }
     for (; i + 16 <= end; i += 16) {
-        const __m128 b0 = _mm_loadu_ps(base + i), b1 = _mm_loadu_ps(base + i + 4);
-        const __m128 b2 = _mm_loadu_ps(base + i + 8), b3 = _mm_loadu_ps(base + i + 12);
-        __m128 a0 = b0, a1 = b1, a2 = b2, a3 = b3;
-        for (std::size_t t = 0; t < targets; ++t) {
-            const float* tp = j.targets[t].data() + i;
-            const __m128 w = _mm_set1_ps(j.weights[t]);
-            a0 = _mm_add_ps(a0, _mm_mul_ps(w, _mm_sub_ps(_mm_loadu_ps(tp), b0)));
-            a1 = _mm_add_ps(a1, _mm_mul_ps(w, _mm_sub_ps(_mm_loadu_ps(tp + 4), b1)));
-            a2 = _mm_add_ps(a2, _mm_mul_ps(w, _mm_sub_ps(_mm_loadu_ps(tp + 8), b2)));
-            a3 = _mm_add_ps(a3, _mm_mul_ps(w, _mm_sub_ps(_mm_loadu_ps(tp + 12), b3)));
-        }
-        if (j.clamp) {
-            a0 = clampPs(a0, lo, hi);
-            a1 = clampPs(a1, lo, hi);
-            a2 = clampPs(a2, lo, hi);
-            a3 = clampPs(a3, lo, hi);
-        }
-        _mm_storeu_ps(out + i, a0);
-        _mm_storeu_ps(out + i + 4, a1);
-        _mm_storeu_ps(out + i + 8, a2);
-        _mm_storeu_ps(out + i + 12, a3);
+        __m128 a[4];
+        blendBlock<4>(j, i, lo, hi, a);
+#pragma GCC unroll 4
+        for (int k = 0; k < 4; ++k) _mm_storeu_ps(out + i + 4 * k, a[k]);
     }
-    for (; i < end; ++i) {
-        const __m128 b = _mm_load_ss(base + i);
-        __m128 a = b;
-        for (std::size_t t = 0; t < targets; ++t)
-            a = _mm_add_ss(a, _mm_mul_ss(_mm_set_ss(j.weights[t]), _mm_sub_ss(_mm_load_ss(j.targets[t].data() + i), b)));
-        if (j.clamp) a = clampSs(a, lo, hi);
-        _mm_store_ss(out + i, a);
-    }
-}
-
-void normalizeSse2(float* xyz, std::size_t triples) noexcept {
-    // Four triples per step: three loads, 8 shuffles to x, y, z, the math,
-    // a transpose back, overlapping stores (the fourth triple's last store
-    // must not reach past the block).
-    for (std::size_t first = 0; first < triples; first += 4) {
-        const std::size_t n = triples - first < 4 ? triples - first : 4;
-        float* p = xyz + first * 3;
-        alignas(16) float partial[12] = {1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0};  // padding: (1, 0, 0)
-        const float* src = p;
-        if (n < 4) {
-            for (std::size_t i = 0; i < n * 3; ++i) partial[i] = p[i];
-            src = partial;
-        }
-        const __m128 m0 = _mm_loadu_ps(src), m1 = _mm_loadu_ps(src + 4), m2 = _mm_loadu_ps(src + 8);
-        // m0 = x0 y0 z0 x1, m1 = y1 z1 x2 y2, m2 = z2 x3 y3 z3
-        const __m128 x = _mm_shuffle_ps(m0, _mm_shuffle_ps(m1, m2, _MM_SHUFFLE(1, 1, 2, 2)), _MM_SHUFFLE(2, 0, 3, 0));
-        const __m128 y = _mm_shuffle_ps(_mm_shuffle_ps(m0, m1, _MM_SHUFFLE(0, 0, 1, 1)),
-                                        _mm_shuffle_ps(m1, m2, _MM_SHUFFLE(2, 2, 3, 3)), _MM_SHUFFLE(2, 0, 2, 0));
-        const __m128 z = _mm_shuffle_ps(_mm_shuffle_ps(m0, m1, _MM_SHUFFLE(1, 1, 2, 2)),
-                                        _mm_shuffle_ps(m2, m2, _MM_SHUFFLE(3, 3, 0, 0)), _MM_SHUFFLE(2, 0, 2, 0));
-        const __m128 len2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(x, x), _mm_mul_ps(y, y)), _mm_mul_ps(z, z));
-        const __m128 positive = _mm_cmpgt_ps(len2, _mm_setzero_ps());
-        const __m128 divisor =
-            _mm_or_ps(_mm_and_ps(positive, _mm_sqrt_ps(len2)), _mm_andnot_ps(positive, _mm_set1_ps(1.0f)));
-        __m128 r0 = _mm_div_ps(x, divisor), r1 = _mm_div_ps(y, divisor), r2 = _mm_div_ps(z, divisor);
-        __m128 r3 = _mm_setzero_ps();
-        _MM_TRANSPOSE4_PS(r0, r1, r2, r3);  // r_i = (x_i, y_i, z_i, 0)
-        const __m128 v[4] = {r0, r1, r2, r3};
-        for (std::size_t i = 0; i < n; ++i) {
-            _mm_storel_pi(reinterpret_cast<__m64*>(p + i * 3), v[i]);
-            _mm_store_ss(p + i * 3 + 2, _mm_movehl_ps(v[i], v[i]));
-        }
-    }
+    for (; i < end; ++i) out[i] = blendOne(j, i, lo, hi);
 }
 
 }  // namespace m3g::skin::detail

@@ -12,9 +12,9 @@
 
 #ifdef M3G_SKIN_X86
 
-#include <emmintrin.h>
-
 #include <cmath>
+
+#include "Sse2.h"
 
 namespace m3g::skin::detail {
 
@@ -38,11 +38,6 @@ inline __m128 cross(__m128 u, __m128 v) noexcept {
 inline __m128 sumAll(__m128 v) noexcept {
     const __m128 pairs = _mm_add_ps(v, _mm_shuffle_ps(v, v, _MM_SHUFFLE(1, 0, 3, 2)));
     return _mm_add_ps(pairs, _mm_shuffle_ps(pairs, pairs, _MM_SHUFFLE(2, 3, 0, 1)));
-}
-
-/// mask ? a : b per element (SSE2 has no blend).
-inline __m128 select(__m128 mask, __m128 a, __m128 b) noexcept {
-    return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b));
 }
 
 }  // namespace
