@@ -178,13 +178,10 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
 
     // The palette, once per bone: (bone -> mesh now) x (at rest).
     const auto bones = static_cast<std::size_t>(mesh.boneCount());
-    boneMatrices_.resize(bones * 16);
+    boneTransforms_.compute(mesh, boneMatrices_);
     atRest_.resize(bones * 16);
     newPalette_.resize(bones);
     for (std::size_t b = 0; b < bones; ++b) {
-        Transform boneToMesh;
-        mesh.bone(static_cast<int>(b))->getTransformTo(&mesh, &boneToMesh);
-        std::copy(boneToMesh.rows().begin(), boneToMesh.rows().end(), boneMatrices_.begin() + b * 16);
         const auto& rest = mesh.atRestTransform(static_cast<int>(b)).rows();
         std::copy(rest.begin(), rest.end(), atRest_.begin() + b * 16);
     }

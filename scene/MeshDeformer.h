@@ -12,6 +12,8 @@
 #include <m3g/skin/Palette.h>
 #include <m3g/skin/Skinning.h>
 
+#include "BoneTransforms.h"
+
 namespace m3g {
 class Mesh;
 class MorphingMesh;
@@ -158,6 +160,7 @@ private:
     std::uint32_t tableRevision_ = 0;
     SkinInputs skinInputs_;
     skin::InfluencePartition partition_;
+    BoneTransforms boneTransforms_;
     std::vector<float> boneMatrices_;  // 16 per bone: bone -> mesh now
     std::vector<float> atRest_;        // 16 per bone
     std::vector<skin::PaletteEntry> palette_, newPalette_;

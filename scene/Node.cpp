@@ -58,6 +58,13 @@ bool Node::getTransformTo(const Node* target, Transform* transform) const {
     while (!target->isDescendantOf(common)) common = common->parent_;
     Transform up;  // this -> common
     for (const Node* n = this; n != common; n = n->parent_) up = n->compositeTransform() * up;
+    if (common == target) {
+        // The target is an ancestor (a bone to its SkinnedMesh, a node to
+        // its World): no inverse (a double-precision 4x4 inversion of the
+        // identity was most of such a call).
+        *transform = up;
+        return true;
+    }
     Transform down;  // target -> common
     for (const Node* n = target; n != common; n = n->parent_) down = n->compositeTransform() * down;
     try {

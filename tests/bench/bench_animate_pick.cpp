@@ -3,6 +3,9 @@
 //   BM_AnimateCorpus       animate() of the largest animated corpus file
 //   BM_AnimateSynthetic    a World of 1,000 animated groups (translation +
 //                          orientation each, two blended controllers)
+//   BM_SkinnedCorpusFrame  a skinned corpus file's frame: animate(), then
+//                          every SkinnedMesh deformed (MeshDeformer: bone
+//                          transforms, palette, kernels)
 //   BM_PickRay/Camera100k  one pick on a 100,000-triangle mesh
 //   BM_PickRayMiss100k     a ray beside it (bounding-box rejection)
 #include <benchmark/benchmark.h>
@@ -14,6 +17,8 @@
 #include <vector>
 
 #include <m3g/m3g.h>
+
+#include "MeshDeformer.h"
 
 namespace {
 
@@ -78,6 +83,44 @@ void BM_AnimateCorpus(benchmark::State& state) {
     state.counters["tracks/s"] = benchmark::Counter(double(f.tracks), benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_AnimateCorpus)->Unit(benchmark::kMicrosecond);
+
+// The skinned corpus files, by path under models/.
+const char* const kSkinnedFiles[] = {
+    "bryan10328__java-m3g/res/mahosyojo-with-sexy-walking.m3g",
+    "BaalNetbek__M3G-Viewer/com.wizzer.m3g.toolkit/test/robot.m3g",
+    "vadosnaprimer__desktop-m3g/sample/sample-12-loader/test.m3g",
+    "jacques-gasselin__m3x/tools/test/data/otokka_jump2.m3g",
+};
+
+void BM_SkinnedCorpusFrame(benchmark::State& state) {
+    const std::string name = kSkinnedFiles[state.range(0)];
+    const std::filesystem::path path = std::filesystem::path(M3G_CORPUS_DIR) / "models" / name;
+    if (!std::filesystem::exists(path)) {
+        state.SkipWithError(("corpus file not found: " + path.string()).c_str());
+        return;
+    }
+    const LoadResult r = Loader::loadDetailed(path.string());
+    std::vector<SkinnedMesh*> meshes;
+    int bones = 0, vertices = 0;
+    for (const auto& o : r.objects)
+        if (auto* s = dynamic_cast<SkinnedMesh*>(o.get())) {
+            meshes.push_back(s);
+            bones += s->boneCount();
+            vertices += s->getVertexBuffer()->getVertexCount();
+        }
+    std::vector<detail::MeshDeformer> deformers(meshes.size());
+    int t = 0;
+    for (auto _ : state) {
+        for (const auto& root : r.roots) benchmark::DoNotOptimize(root->animate(t));
+        for (std::size_t i = 0; i < meshes.size(); ++i) benchmark::DoNotOptimize(deformers[i].update(*meshes[i]));
+        t += 33;
+    }
+    state.SetLabel(name.substr(name.find_last_of('/') + 1));
+    state.counters["meshes"] = static_cast<double>(meshes.size());
+    state.counters["bones"] = bones;
+    state.counters["vertices"] = vertices;
+}
+BENCHMARK(BM_SkinnedCorpusFrame)->DenseRange(0, 3)->Unit(benchmark::kMicrosecond);
 
 Ref<KeyframeSequence> sequence(int components, int interpolation, const std::vector<std::vector<float>>& keys) {
     Ref<KeyframeSequence> s = new KeyframeSequence(static_cast<int>(keys.size()), components, interpolation);

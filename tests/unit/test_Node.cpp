@@ -235,6 +235,11 @@ TEST(Node, GetTransformToHandComputed) {
     expectPoint(t, {1, 1, 1}, {3, -3, 2});
     ASSERT_TRUE(c->getTransformTo(b, &t));
     expectPoint(t, {3, -3, 2}, {1, 1, 1});
+    // To an ancestor (no inverse taken): T(1,0,0) S(2).
+    ASSERT_TRUE(b->getTransformTo(root, &t));
+    expectPoint(t, {1, 1, 1}, {3, 2, 2});
+    ASSERT_TRUE(b->getTransformTo(a, &t));
+    expectPoint(t, {1, 1, 1}, {2, 2, 2});
     ASSERT_TRUE(b->getTransformTo(b, &t));
     EXPECT_TRUE(t == Transform());
 }
