@@ -3,8 +3,9 @@
 // Per vertex: the K palette rows are blended with 128-bit multiply-adds
 // (3 position rows + 3 normal rows) and applied as row dot products reduced
 // by a 4x4 transpose. The blended normals wait in a 4-vertex buffer and are
-// renormalised four at a time (one sqrt and one division for four vertices),
-// which keeps the long sqrt/division latency out of the per-vertex chain.
+// renormalised four at a time (the reciprocal square root estimate and one
+// Newton step, as in the run kernel), which keeps that latency out of the
+// per-vertex chain.
 // Every lane runs the same operations, so the result of a vertex does not
 // depend on which other vertices share its batch.
 #include "Kernels.h"
@@ -54,15 +55,12 @@ public:
         __m128 x = _mm_load_ps(pending_[0]), y = _mm_load_ps(pending_[1]);
         __m128 z = _mm_load_ps(pending_[2]), w = _mm_load_ps(pending_[3]);
         _MM_TRANSPOSE4_PS(x, y, z, w);
-        const __m128 len2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(x, x), _mm_mul_ps(y, y)), _mm_mul_ps(z, z));
-        const __m128 positive = _mm_cmpgt_ps(len2, _mm_setzero_ps());
-        const __m128 len = _mm_sqrt_ps(len2);
-        // 1 where the length is zero (or NaN): divides by 1, leaving n.
-        const __m128 divisor = _mm_or_ps(_mm_and_ps(positive, len), _mm_andnot_ps(positive, _mm_set1_ps(1.0f)));
+        // The run kernel's reciprocal square root and Newton step (Sse2.h).
+        const __m128 inv = inverseLength(x, y, z);
         alignas(16) float out[3][4];
-        _mm_store_ps(out[0], _mm_div_ps(x, divisor));
-        _mm_store_ps(out[1], _mm_div_ps(y, divisor));
-        _mm_store_ps(out[2], _mm_div_ps(z, divisor));
+        _mm_store_ps(out[0], _mm_mul_ps(x, inv));
+        _mm_store_ps(out[1], _mm_mul_ps(y, inv));
+        _mm_store_ps(out[2], _mm_mul_ps(z, inv));
         for (int i = 0; i < count_; ++i) {
             destination_[i][0] = out[0][i];
             destination_[i][1] = out[1][i];
