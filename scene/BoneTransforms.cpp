@@ -1,6 +1,7 @@
 #include "BoneTransforms.h"
 
 #include <algorithm>
+#include <bit>
 #include <functional>
 
 #include <m3g/Node.h>
@@ -26,7 +27,7 @@ void BoneTransforms::insert(const Node* node, const Transform& toMesh) {
     if (2 * (toMesh_.size() + 1) > table_.size()) {
         // Grow and rehash (kept across frames: no allocation once the
         // skeleton's size is known).
-        std::vector<Slot> old(std::max<std::size_t>(64, table_.size() * 2));
+        std::vector<Slot> old(table_.size() * 2);
         old.swap(table_);
         const std::size_t mask = table_.size() - 1;
         for (const Slot& s : old) {
@@ -46,8 +47,13 @@ void BoneTransforms::insert(const Node* node, const Transform& toMesh) {
 void BoneTransforms::compute(const SkinnedMesh& mesh, std::vector<float>& out) {
     const int bones = mesh.boneCount();
     out.resize(static_cast<std::size_t>(bones) * 16);
-    if (table_.empty()) table_.resize(64);
-    std::fill(table_.begin(), table_.end(), Slot{});
+    // Room for a few nodes per bone to start with (cleared every call, so
+    // kept small for the common one-bone mesh); insert() grows it.
+    const std::size_t start = std::bit_ceil(std::max<std::size_t>(16, 4 * static_cast<std::size_t>(bones)));
+    if (table_.size() < start)
+        table_.assign(start, Slot{});
+    else
+        std::fill(table_.begin(), table_.end(), Slot{});
     toMesh_.clear();
     for (int b = 0; b < bones; ++b) {
         const Node* bone = mesh.bone(b);

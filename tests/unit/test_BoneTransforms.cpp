@@ -113,3 +113,30 @@ TEST(BoneTransforms, BranchingSkeletonAgreesWithGetTransformToAcrossPoses) {
     bt.compute(*mesh, out);
     expectLikeGetTransformTo(*mesh, out);
 }
+
+TEST(BoneTransforms, DeepChainGrowsTheMemo) {
+    // One bone 50 levels below the skeleton (and one halfway): many more
+    // nodes than the memo starts with room for, met in one call.
+    Ref<Group> skeleton = new Group();
+    std::vector<Ref<Group>> chain;
+    Group* parent = skeleton.get();
+    for (int i = 0; i < 50; ++i) {
+        chain.push_back(new Group());
+        parent->addChild(chain.back());
+        chain.back()->setTranslation(0.1f, 0.0f, 0.02f * static_cast<float>(i % 3));
+        chain.back()->setOrientation(3.0f, 0.0f, 0.0f, 1.0f);
+        parent = chain.back().get();
+    }
+    Ref<SkinnedMesh> mesh = meshWith(skeleton);
+    mesh->addTransform(chain.back(), 1, 0, 2);
+    mesh->addTransform(chain[24], 1, 2, 1);
+    detail::BoneTransforms bt;
+    std::vector<float> out;
+    bt.compute(*mesh, out);
+    expectLikeGetTransformTo(*mesh, out);
+    // 50 turns of 3 degrees about z: the deepest bone's x axis at 150 degrees.
+    EXPECT_NEAR(out[0], std::cos(150.0 * 3.14159265358979 / 180.0), 1e-5);
+    EXPECT_NEAR(out[4], std::sin(150.0 * 3.14159265358979 / 180.0), 1e-5);
+    bt.compute(*mesh, out);  // again, with the grown table
+    expectLikeGetTransformTo(*mesh, out);
+}
