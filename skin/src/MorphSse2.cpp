@@ -49,13 +49,8 @@ inline void blendBlock(const MorphJob& j, std::size_t i, __m128 lo, __m128 hi, _
 /// stored at out (inverseLength: 1 for a zero or NaN length, which leaves
 /// the triple as it is).
 inline void storeNormalized(float* out, const __m128 (&a)[3]) noexcept {
-    // a[0] = x0 y0 z0 x1, a[1] = y1 z1 x2 y2, a[2] = z2 x3 y3 z3: loadSoa3's
-    // shuffles on registers.
-    const __m128 xy = _mm_shuffle_ps(a[1], a[2], _MM_SHUFFLE(2, 1, 3, 2));
-    const __m128 yz = _mm_shuffle_ps(a[0], a[1], _MM_SHUFFLE(1, 0, 2, 1));
-    const __m128 x = _mm_shuffle_ps(a[0], xy, _MM_SHUFFLE(2, 0, 3, 0));
-    const __m128 y = _mm_shuffle_ps(yz, xy, _MM_SHUFFLE(3, 1, 2, 0));
-    const __m128 z = _mm_shuffle_ps(yz, a[2], _MM_SHUFFLE(3, 0, 3, 1));
+    __m128 x, y, z;
+    soa3FromRegisters(a[0], a[1], a[2], x, y, z);
     const __m128 inv = inverseLength(x, y, z);
     __m128 r0, r1, r2;
     soa3ToXyz(_mm_mul_ps(x, inv), _mm_mul_ps(y, inv), _mm_mul_ps(z, inv), r0, r1, r2);

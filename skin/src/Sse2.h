@@ -8,16 +8,19 @@
 
 namespace m3g::skin::detail {
 
-/// Four consecutive xyz triples (12 floats) as x, y, z lanes.
-inline void loadSoa3(const float* p, __m128& x, __m128& y, __m128& z) noexcept {
-    const __m128 m0 = _mm_loadu_ps(p);      // x0 y0 z0 x1
-    const __m128 m1 = _mm_loadu_ps(p + 4);  // y1 z1 x2 y2
-    const __m128 m2 = _mm_loadu_ps(p + 8);  // z2 x3 y3 z3
+/// x, y, z lanes of four xyz triples given as the 12 floats in three
+/// registers: m0 = x0 y0 z0 x1, m1 = y1 z1 x2 y2, m2 = z2 x3 y3 z3.
+inline void soa3FromRegisters(__m128 m0, __m128 m1, __m128 m2, __m128& x, __m128& y, __m128& z) noexcept {
     const __m128 xy = _mm_shuffle_ps(m1, m2, _MM_SHUFFLE(2, 1, 3, 2));  // x2 y2 x3 y3
     const __m128 yz = _mm_shuffle_ps(m0, m1, _MM_SHUFFLE(1, 0, 2, 1));  // y0 z0 y1 z1
     x = _mm_shuffle_ps(m0, xy, _MM_SHUFFLE(2, 0, 3, 0));
     y = _mm_shuffle_ps(yz, xy, _MM_SHUFFLE(3, 1, 2, 0));
     z = _mm_shuffle_ps(yz, m2, _MM_SHUFFLE(3, 0, 3, 1));
+}
+
+/// Four consecutive xyz triples (12 floats) as x, y, z lanes.
+inline void loadSoa3(const float* p, __m128& x, __m128& y, __m128& z) noexcept {
+    soa3FromRegisters(_mm_loadu_ps(p), _mm_loadu_ps(p + 4), _mm_loadu_ps(p + 8), x, y, z);
 }
 
 /// Four lanes of x, y, z as the 12 floats of their xyz triples.
