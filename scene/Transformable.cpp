@@ -129,15 +129,30 @@ void Transformable::getCompositeTransform(Transform* transform) const {
 
 Transform Transformable::compositeTransform() const noexcept {
     // T R S: rotation columns scaled by S, translation in the last column.
-    const glm::mat4 r = detail::quatToMatrix(toGlmQuat(q_));
-    std::array<float, 16> rows{};
-    for (int row = 0; row < 3; ++row) {
-        for (int c = 0; c < 3; ++c) rows[row * 4 + c] = r[c][row] * s_[c];
-        rows[row * 4 + 3] = t_[row];
-    }
-    rows[15] = 1.0f;
-    Transform trs = Transform::fromRows(rows);
-    return hasM_ ? trs * m_ : trs;
+    // R written out from the unit quaternion (glm::mat3_cast's terms, in its
+    // order, so the bits are the same): this runs for every node of every
+    // rendered, picked or skinned frame, and going through a glm 4x4 and a
+    // general product cost five times as much.
+    const float x = q_[0], y = q_[1], z = q_[2], w = q_[3];
+    const float xx = x * x, yy = y * y, zz = z * z, xz = x * z, xy = x * y, yz = y * z;
+    const float wx = w * x, wy = w * y, wz = w * z;
+    const float sx = s_[0], sy = s_[1], sz = s_[2];
+    const std::array<float, 16> trs{(1.0f - 2.0f * (yy + zz)) * sx, 2.0f * (xy - wz) * sy, 2.0f * (xz + wy) * sz, t_[0],
+                                    2.0f * (xy + wz) * sx, (1.0f - 2.0f * (xx + zz)) * sy, 2.0f * (yz - wx) * sz, t_[1],
+                                    2.0f * (xz - wy) * sx, 2.0f * (yz + wx) * sy, (1.0f - 2.0f * (xx + yy)) * sz, t_[2],
+                                    0.0f, 0.0f, 0.0f, 1.0f};
+    if (!hasM_) return Transform::fromRows(trs);
+    // (T R S) M: TRS's bottom row is (0, 0, 0, 1), so the product's is M's.
+    const auto& m = m_.rows();
+    std::array<float, 16> out;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c) {
+            float sum = 0.0f;
+            for (int k = 0; k < 4; ++k) sum += trs[r * 4 + k] * m[k * 4 + c];
+            out[r * 4 + c] = sum;
+        }
+    for (int c = 0; c < 4; ++c) out[12 + c] = m[12 + c];
+    return Transform::fromRows(out);
 }
 
 bool Transformable::isAnimatable(int property) const noexcept {

@@ -1,7 +1,9 @@
 // Transformable, Node and Group semantics (spec digest §4.2-4.5, §5.1, §5.2).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 
 #include <m3g/AnimationTrack.h>
 #include <m3g/Group.h>
@@ -104,6 +106,40 @@ TEST(Transformable, CompositeIsTRSM) {
     Transform c;
     g->getCompositeTransform(&c);
     expectPoint(c, {1, 0, 0}, {9, 2, 0});
+}
+
+// The composite T R S M (spec digest: Transformable) against the same
+// product built with the public Transform API, for random parts; and an
+// affine M on a Node, where the product's bottom row is M's.
+TEST(Transformable, CompositeIsTranslationRotationScaleThenM) {
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(-2.0f, 2.0f);
+    for (int i = 0; i < 50; ++i) {
+        Ref<Group> g = make<Group>();
+        const float t[3] = {u(rng), u(rng), u(rng)}, s[3] = {u(rng), u(rng), u(rng)};
+        const float angle = 90.0f * u(rng), axis[3] = {u(rng), u(rng), u(rng) + 3.0f};
+        g->setTranslation(t[0], t[1], t[2]);
+        g->setScale(s[0], s[1], s[2]);
+        g->setOrientation(angle, axis[0], axis[1], axis[2]);
+        Transform m;
+        if (i % 2) {
+            m.postRotate(40.0f * u(rng), 1, u(rng), 0);
+            m.postTranslate(u(rng), u(rng), u(rng));
+            m.postScale(1, 0.5f, 2);
+            g->setTransform(&m);
+        }
+        Transform expected;
+        expected.postTranslate(t[0], t[1], t[2]);
+        expected.postRotate(angle, axis[0], axis[1], axis[2]);
+        expected.postScale(s[0], s[1], s[2]);
+        expected.postMultiply(&m);
+        Transform c;
+        g->getCompositeTransform(&c);
+        for (int r = 0; r < 4; ++r)
+            for (int k = 0; k < 4; ++k)
+                EXPECT_NEAR(c.at(r, k), expected.at(r, k), 2e-6f * std::max(1.0f, std::abs(expected.at(r, k))))
+                    << "case " << i << " element " << r << "," << k;
+    }
 }
 
 TEST(Node, Defaults) {
