@@ -1,5 +1,8 @@
 #include <m3g/skin/Isa.h>
 
+#include <cstdlib>
+#include <string_view>
+
 namespace m3g::skin {
 
 namespace {
@@ -11,6 +14,19 @@ bool cpuHasAvx2Fma() noexcept {
 #else
     return false;
 #endif
+}
+/// The most Auto may pick: M3G_SKIN_ISA=scalar or sse2 holds it below the
+/// best path (to run a whole program, the renderer's deformation included,
+/// on the SSE2 or plain kernels); unset or anything else, no limit. Read once.
+Isa autoLimit() noexcept {
+    static const Isa limit = [] {
+        const char* value = std::getenv("M3G_SKIN_ISA");
+        const std::string_view v = value ? value : "";
+        if (v == "scalar") return Isa::Scalar;
+        if (v == "sse2") return Isa::Sse2;
+        return Isa::Avx2;
+    }();
+    return limit;
 }
 }  // namespace
 
@@ -30,8 +46,9 @@ bool isaSupported(Isa isa) noexcept {
 
 Isa resolveIsa(Isa isa) noexcept {
     if (isa != Isa::Auto) return isa;
-    if (isaSupported(Isa::Avx2)) return Isa::Avx2;
-    if (isaSupported(Isa::Sse2)) return Isa::Sse2;
+    const Isa limit = autoLimit();
+    if (limit == Isa::Avx2 && isaSupported(Isa::Avx2)) return Isa::Avx2;
+    if (limit != Isa::Scalar && isaSupported(Isa::Sse2)) return Isa::Sse2;
     return Isa::Scalar;
 }
 

@@ -15,7 +15,9 @@ enum class Isa {
 
 /// True if `isa` can run here (Auto and Scalar always can).
 bool isaSupported(Isa isa) noexcept;
-/// Auto -> the best supported path; any other value is returned unchanged.
+/// Auto -> the best supported path, no better than the environment variable
+/// M3G_SKIN_ISA allows (`scalar`, `sse2`; read once per process); any other
+/// value is returned unchanged.
 Isa resolveIsa(Isa isa) noexcept;
 /// "auto", "scalar", "sse2", "avx2".
 const char* isaName(Isa isa) noexcept;
