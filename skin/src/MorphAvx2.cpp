@@ -6,7 +6,6 @@
 
 #ifdef M3G_SKIN_X86
 
-
 #include "Avx2.h"
 
 namespace m3g::skin::detail {

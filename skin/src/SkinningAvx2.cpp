@@ -277,8 +277,6 @@ M3G_AVX2_INLINE __m256 quadSum(__m256 ab, __m256 cd) noexcept {
                          _mm256_shuffle_ps(ab, cd, _MM_SHUFFLE(3, 2, 3, 2)));
 }
 
-
-
 /// Lanes from .. from+lanes-1 of x, y, z (within 0..7): floats [3 from,
 /// 3 (from + lanes)) of the 24 that storeSoa3(out) writes, and no others
 /// (a run's last block: its other lanes belong to other vertices, which
@@ -305,7 +303,6 @@ M3G_AVX2_INLINE void storeSoa3Lanes(float* out, __m256 x, __m256 y, __m256 z, st
 struct Block {
     __m256 x, y, z, nx, ny, nz;
 };
-
 
 /// x|y, z|nx, ny|nz of lanes l0 .. l0+3 (the four vertices per half).
 template <int K, bool Wide, class Lane>
@@ -348,7 +345,6 @@ M3G_AVX2_INLINE Block skinBlock(const BlockContext& c, Lane&& lane, unsigned& ba
     o.nz = _mm256_mul_ps(nz, inv);
     return o;
 }
-
 
 /// The blended rows of a shared set of influences (blendRows' 24 floats:
 /// P0 P1 P2 N0 N1 N2, four each) as eight-lane coefficients. Two sources:

@@ -161,14 +161,12 @@ void skinN(const SkinningJob& j, std::size_t begin, std::size_t end) noexcept {
 }
 
 // Shared-influence runs (InfluenceRun), four lanes at a time: a run's
-// entries are blended once (from its first vertex's slots), its 21 used
-// coefficients broadcast once into registers' worth of memory operands, and
-// each block of four consecutive vertices is transposed to x, y, z lanes,
-// multiplied and added (no FMA in SSE2), renormalised with the reciprocal
-// square root estimate plus one Newton step, and transposed back. The
-// AVX2 run kernel's structure at half the width.
-
-
+// entries are blended once (from its first vertex's slots) and its 24
+// coefficients broadcast once (the block loop's multiplies take them as
+// memory operands); each block of four consecutive vertices is transposed
+// to x, y, z lanes, multiplied and added (no FMA in SSE2), renormalised
+// with the reciprocal square root estimate plus one Newton step, and
+// transposed back. The AVX2 run kernel's structure at half the width.
 
 /// Lanes from .. from+lanes-1 of x, y, z (within 0..3) to floats
 /// [3 from, 3 (from + lanes)) of out, and no others (the block's other
@@ -194,8 +192,6 @@ inline void storeSoa3Lanes(float* out, __m128 x, __m128 y, __m128 z, std::size_t
     }
     for (; i < end; ++i) out[i] = t[i];
 }
-
-
 
 /// A run's coefficients, each in all four lanes: P0 P1 P2 N0 N1 N2, four
 /// per row (the normal rows' fourth unused), so that the block loop's
