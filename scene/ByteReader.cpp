@@ -17,7 +17,21 @@ ByteReader::ByteReader(std::span<const std::uint8_t> data, std::string context, 
     : data_(data), base_(baseOffset), context_(std::move(context)), offsetWhere_(std::move(offsetWhere)),
       log_(log) {}
 
+ByteReader ByteReader::described(std::span<const std::uint8_t> data, Describe describe, std::size_t baseOffset,
+                                 LoadLog* log) {
+    ByteReader r(data, std::string(), baseOffset, log);
+    r.describe_ = std::move(describe);
+    return r;
+}
+
+void ByteReader::describe() const {
+    if (!describe_) return;
+    describe_(context_, offsetWhere_);
+    describe_ = nullptr;
+}
+
 std::string ByteReader::whereAt(std::size_t relativePos, const std::string& what) const {
+    describe();
     std::string s;
     if (!context_.empty()) s = context_ + ": ";
     s += what;
@@ -237,6 +251,7 @@ std::vector<float> ByteReader::readFloat32s(std::uint64_t n, const char* what) {
 ByteReader ByteReader::sub(std::uint64_t n, std::string context, const char* what) {
     const std::size_t start = pos_;
     const auto s = readBytes(n, what);
+    describe();  // the sub-reader keeps the offset qualifier
     return ByteReader(s, std::move(context), base_ + start, log_, offsetWhere_);
 }
 

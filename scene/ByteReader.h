@@ -8,6 +8,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -27,6 +28,12 @@ public:
     explicit ByteReader(std::span<const std::uint8_t> data, std::string context = {},
                         std::size_t baseOffset = 0, LoadLog* log = nullptr,
                         std::string offsetWhere = {});
+    /// Fills `context` and `offsetWhere` (as above) when a message first
+    /// needs them: most readers never fail or warn, and building the two
+    /// strings for every object was a sixth of a small file's load.
+    using Describe = std::function<void(std::string& context, std::string& offsetWhere)>;
+    static ByteReader described(std::span<const std::uint8_t> data, Describe describe, std::size_t baseOffset,
+                                LoadLog* log);
 
     // --- position -------------------------------------------------------
     std::size_t position() const { return pos_; }                 ///< relative to data[0]
@@ -34,7 +41,10 @@ public:
     std::size_t size() const { return data_.size(); }
     std::size_t remaining() const { return data_.size() - pos_; }
     bool atEnd() const { return pos_ == data_.size(); }
-    const std::string& context() const { return context_; }
+    const std::string& context() const {
+        describe();
+        return context_;
+    }
     LoadLog* log() const { return log_; }
     bool lenient() const { return log_ && log_->lenient(); }
 
@@ -103,12 +113,15 @@ public:
 
 private:
     void need(std::size_t n, const char* what);
+    /// Runs describe_ once (messages only).
+    void describe() const;
 
     std::span<const std::uint8_t> data_;
     std::size_t pos_ = 0;
     std::size_t base_ = 0;
-    std::string context_;
-    std::string offsetWhere_;
+    mutable Describe describe_;
+    mutable std::string context_;
+    mutable std::string offsetWhere_;
     LoadLog* log_ = nullptr;
 };
 

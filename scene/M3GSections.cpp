@@ -39,8 +39,15 @@ std::string objectContext(const M3GObject& o) {
 }
 
 ByteReader objectReader(const M3GObject& o, LoadLog* log) {
-    return ByteReader(o.data, objectContext(o), o.dataOffset, log,
-                      o.inflated ? str("of the inflated data of section ", o.section) : std::string());
+    // The object outlives its reader (both live through the file's decoding).
+    const M3GObject* object = &o;
+    return ByteReader::described(
+        o.data,
+        [object](std::string& context, std::string& offsetWhere) {
+            context = objectContext(*object);
+            if (object->inflated) offsetWhere = str("of the inflated data of section ", object->section);
+        },
+        o.dataOffset, log);
 }
 
 std::uint32_t adler32Of(std::span<const std::uint8_t> bytes) {

@@ -8,11 +8,14 @@
 #include <m3g/Exception.h>
 
 #include "ByteReader.h"
+#include "M3GSections.h"
 #include "M3GTestBytes.h"
 
 using m3g::IOException;
 using m3g::detail::ByteReader;
 using m3g::detail::LoadLog;
+using m3g::detail::M3GObject;
+using m3g::detail::objectReader;
 using m3gtest::Bytes;
 using m3gtest::Writer;
 
@@ -237,4 +240,35 @@ TEST(ByteReader, OffsetQualifierForInflatedData) {
     ByteReader r(Bytes{}, "section 3, object 9 (Group, type 9)", 77, nullptr, "of the inflated data of section 3");
     const std::string m = messageOf([&] { r.readByte(); });
     EXPECT_NE(m.find("byte offset 77 of the inflated data of section 3"), std::string::npos) << m;
+}
+
+// An object's reader (objectReader) describes itself only when a message
+// needs it: the failure and the warning still name the object and, for a
+// zlib section, the inflated data; a sub-reader keeps the qualifier.
+TEST(ByteReader, ObjectReaderDescribesItselfInMessages) {
+    const Bytes bytes{1, 2};
+    M3GObject o;
+    o.type = 14;
+    o.section = 2;
+    o.index = 5;
+    o.dataOffset = 40;
+    o.inflated = true;
+    o.data = bytes;
+    LoadLog log;
+    log.options.lenient = true;
+    ByteReader r = objectReader(o, &log);
+    r.warn("odd value");
+    ASSERT_EQ(log.warnings.size(), 1u);
+    EXPECT_NE(log.warnings[0].find("section 2, object 5 (Mesh, type 14): odd value at byte offset 40 of the inflated "
+                                   "data of section 2"),
+              std::string::npos)
+        << log.warnings[0];
+    ByteReader fresh = objectReader(o, &log);
+    ByteReader inner = fresh.sub(1, "inner", "the inner part");
+    const std::string m = messageOf([&] { inner.readInt32(); });
+    EXPECT_NE(m.find("inner: "), std::string::npos) << m;
+    EXPECT_NE(m.find("at byte offset 40 of the inflated data of section 2"), std::string::npos) << m;
+    const std::string own = messageOf([&] { fresh.readInt32(); });
+    EXPECT_NE(own.find("section 2, object 5 (Mesh, type 14): "), std::string::npos) << own;
+    EXPECT_NE(own.find("at byte offset 41 of the inflated data of section 2"), std::string::npos) << own;
 }
