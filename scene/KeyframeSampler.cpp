@@ -181,6 +181,13 @@ Quat squadB(const ValidKeys& keys, int j) {
     return mul(cur, expQuat(t));
 }
 
+/// Control quaternion `which` (0: A, 1: B) of valid key j from a view's
+/// precomputed controls.
+Quat squadControl(const KeyframeView& k, int j, int which) {
+    const double* c = k.squad.data() + std::size_t(j) * 8 + std::size_t(which) * 4;
+    return {c[0], c[1], c[2], c[3]};
+}
+
 void writeQuat(const Quat& q, std::span<float> out) {
     out[0] = float(q.x);
     out[1] = float(q.y);
@@ -208,6 +215,17 @@ std::string keyframeProblem(const KeyframeView& k) {
     if (lastTime > k.duration)
         return str("the last valid keyframe time ", lastTime, " exceeds the duration ", k.duration);
     return {};
+}
+
+void squadControls(const KeyframeView& k, std::vector<double>& out) {
+    const ValidKeys keys(k);
+    out.resize(std::size_t(keys.count()) * 8);
+    for (int j = 0; j < keys.count(); ++j) {
+        const Quat a = squadA(keys, j), b = squadB(keys, j);
+        double* c = out.data() + std::size_t(j) * 8;
+        c[0] = a.x, c[1] = a.y, c[2] = a.z, c[3] = a.w;
+        c[4] = b.x, c[5] = b.y, c[6] = b.z, c[7] = b.w;
+    }
 }
 
 SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<float> out) {
@@ -272,7 +290,9 @@ SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<flo
     }
     case KeyframeSequence::SQUAD: {
         const Quat q0 = quatAt(p0), q1 = quatAt(p1);
-        const Quat a = squadA(keys, j), b = squadB(keys, j1);
+        const bool cached = !k.squad.empty();
+        const Quat a = cached ? squadControl(k, j, 0) : squadA(keys, j);
+        const Quat b = cached ? squadControl(k, j1, 1) : squadB(keys, j1);
         writeQuat(slerp(slerp(q0, q1, u), slerp(a, b, u), 2.0 * u * (1.0 - u)), out);
         break;
     }

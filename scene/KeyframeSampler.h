@@ -5,6 +5,7 @@
 #include <limits>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace m3g {
 class KeyframeSequence;
@@ -22,6 +23,10 @@ struct KeyframeView {
     int first, last;     // valid range; first > last wraps
     std::span<const int> times;     // keyCount entries
     std::span<const float> values;  // keyCount * components entries
+    /// SQUAD: the control quaternions A_j, B_j of each valid key j (8
+    /// doubles per key, x y z w each, in valid-range order) as
+    /// squadControls() computes them; empty: computed per sample.
+    std::span<const double> squad = {};
 };
 
 /// View of a sequence (no copy; valid while the sequence is unchanged).
@@ -39,6 +44,11 @@ struct SampleValidity {
     double forward = std::numeric_limits<double>::infinity();
     double backward = std::numeric_limits<double>::infinity();
 };
+
+/// The SQUAD control quaternions of every valid key of a valid SQUAD view,
+/// into `out` (8 doubles per key): what sampleKeyframes would compute for
+/// each segment, once per change of the sequence instead of per sample.
+void squadControls(const KeyframeView& k, std::vector<double>& out);
 
 /// Samples a valid view (see keyframeProblem) at sequence time `time` into
 /// `out` (at least k.components floats). Quaternion results (SLERP, SQUAD)

@@ -41,6 +41,7 @@ Object3D* KeyframeSequence::duplicateImpl(DuplicateMap&) const { return new Keyf
 
 void KeyframeSequence::changed() noexcept {
     validated_ = false;
+    squadReady_ = false;
     touch();
 }
 
@@ -98,6 +99,15 @@ void KeyframeSequence::setRepeatMode(int mode) {
     detail::requireEnum(mode, {CONSTANT, LOOP}, "KeyframeSequence::setRepeatMode", "mode");
     repeatMode_ = mode;
     changed();
+}
+
+std::span<const double> KeyframeSequence::squadControls() const {
+    if (!squadReady_) {
+        squad_.clear();
+        if (interpolation_ == SQUAD) detail::squadControls(detail::viewOf(*this), squad_);
+        squadReady_ = true;
+    }
+    return squad_;
 }
 
 void KeyframeSequence::validate() const {

@@ -136,8 +136,9 @@ void applyTracks(Object3D& target, const std::vector<Ref<Object3D>>& tracks, int
 
             const Ref<KeyframeSequence> seq = track.getKeyframeSequence();
             seq->validate();
-            const detail::SampleValidity sv =
-                detail::sampleKeyframes(detail::viewOf(*seq), double(c->getPosition(worldTime)), sample);
+            detail::KeyframeView view = detail::viewOf(*seq);
+            view.squad = seq->squadControls();  // empty unless SQUAD
+            const detail::SampleValidity sv = detail::sampleKeyframes(view, double(c->getPosition(worldTime)), sample);
             validity = std::min(validity, worldValidity(sv, c->getSpeed()));
             if (start != stop) validity = std::min(validity, double(stop) - double(worldTime));
 

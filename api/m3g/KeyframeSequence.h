@@ -66,6 +66,11 @@ public:
     /// are non-decreasing along the valid range and the last valid key time
     /// is <= the duration. The result is cached until the next change.
     void validate() const;
+    /// SQUAD sequences: the control quaternions of every valid keyframe
+    /// (8 doubles per key, valid-range order; detail::squadControls), computed
+    /// on the first call after a change instead of for every sample. Empty
+    /// for other interpolations. Call after validate().
+    std::span<const double> squadControls() const;
 
 protected:
     KeyframeSequence(const KeyframeSequence& other);
@@ -84,6 +89,8 @@ private:
     std::vector<int> times_;
     std::vector<float> values_;
     mutable bool validated_ = false;
+    mutable std::vector<double> squad_;  // squadControls(), while squadReady_
+    mutable bool squadReady_ = false;
 };
 
 }  // namespace m3g

@@ -302,3 +302,48 @@ TEST(KeyframeSampler, SquadLoopFourKeysNonConstantRate) {
     expectQuat(sampleN(*s, 20), zQuat(40));
     expectQuat(sampleN(*s, 40), zQuat(0));
 }
+
+// SQUAD control quaternions computed once per change of the sequence
+// (KeyframeSequence::squadControls, as animate() samples) give the same
+// bits as computing them per sample; every kind of change refreshes them.
+TEST(KeyframeSampler, SquadControlsCachedGiveTheSameBitsAndFollowChanges) {
+    auto s = makeSeq(KeyframeSequence::SQUAD, KeyframeSequence::LOOP, 100,
+                     {{0, {0, 0, 0, 1}},
+                      {15, {0.3f, 0.1f, 0, 0.9f}},
+                      {40, {0, 0.7f, 0.2f, 0.6f}},
+                      {70, {-0.5f, 0, 0.5f, 0.5f}},
+                      {90, {0.1f, -0.2f, 0.9f, 0.3f}}});
+    auto expectSameBits = [&](const char* what) {
+        s->validate();
+        detail::KeyframeView perSample = detail::viewOf(*s);
+        detail::KeyframeView cached = perSample;
+        cached.squad = s->squadControls();
+        ASSERT_FALSE(cached.squad.empty()) << what;
+        for (double t = -30.0; t <= 230.0; t += 1.7) {
+            float a[4], b[4];
+            detail::sampleKeyframes(perSample, t, a);
+            detail::sampleKeyframes(cached, t, b);
+            for (int c = 0; c < 4; ++c) ASSERT_EQ(a[c], b[c]) << what << ", time " << t << ", component " << c;
+        }
+    };
+    expectSameBits("loop");
+    const float q[4] = {0.6f, 0, 0, 0.8f};
+    s->setKeyframe(2, 45, q);
+    expectSameBits("after setKeyframe");
+    // A wrapping valid range (keys 3, 4, 0, 1), with times rising along it.
+    const float k0[4] = {0, 0, 0, 1}, k1[4] = {0.3f, 0.1f, 0, 0.9f};
+    const float k3[4] = {-0.5f, 0, 0.5f, 0.5f}, k4[4] = {0.1f, -0.2f, 0.9f, 0.3f};
+    s->setKeyframe(3, 0, k3);
+    s->setKeyframe(4, 10, k4);
+    s->setKeyframe(0, 20, k0);
+    s->setKeyframe(1, 50, k1);
+    s->setValidRange(3, 1);
+    expectSameBits("after a wrapping setValidRange");
+    s->setValidRange(3, 4);
+    s->setRepeatMode(KeyframeSequence::CONSTANT);
+    expectSameBits("after setRepeatMode");
+    s->setDuration(95);
+    expectSameBits("after setDuration");
+    auto linear = makeSeq(KeyframeSequence::LINEAR, KeyframeSequence::LOOP, 10, {{0, {1}}, {5, {2}}});
+    EXPECT_TRUE(linear->squadControls().empty());
+}
