@@ -11,7 +11,10 @@ namespace m3g::detail {
 
 namespace {
 
-std::size_t slotOf(const Node* node, std::size_t mask) noexcept { return std::hash<const Node*>{}(node) * 0x9E3779B97F4A7C15ull >> 20 & mask; }
+/// Fibonacci hashing of the node's address (its low bits are alignment).
+std::size_t slotOf(const Node* node, std::size_t mask) noexcept {
+    return ((std::hash<const Node*>{}(node) * 0x9E3779B97F4A7C15ull) >> 20) & mask;
+}
 
 }  // namespace
 
@@ -27,10 +30,10 @@ void BoneTransforms::insert(const Node* node, const Transform& toMesh) {
     if (2 * (toMesh_.size() + 1) > table_.size()) {
         // Grow and rehash (kept across frames: no allocation once the
         // skeleton's size is known).
-        std::vector<Slot> old(table_.size() * 2);
-        old.swap(table_);
+        std::vector<Slot> previous(table_.size() * 2);
+        previous.swap(table_);  // table_ is now the larger, empty one
         const std::size_t mask = table_.size() - 1;
-        for (const Slot& s : old) {
+        for (const Slot& s : previous) {
             if (!s.node) continue;
             std::size_t i = slotOf(s.node, mask);
             while (table_[i].node) i = (i + 1) & mask;
