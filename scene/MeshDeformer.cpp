@@ -176,15 +176,19 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         ++inputStamp_;
     }
 
-    // The palette, once per bone: (bone -> mesh now) x (at rest).
+    // The palette, once per bone: (bone -> mesh now) x (at rest). The
+    // at-rest matrices are captured by addTransform, which also changes the
+    // table: copied only then.
     const auto bones = static_cast<std::size_t>(mesh.boneCount());
     boneTransforms_.compute(mesh, boneMatrices_);
-    atRest_.resize(bones * 16);
-    newPalette_.resize(bones);
-    for (std::size_t b = 0; b < bones; ++b) {
-        const auto& rest = mesh.atRestTransform(static_cast<int>(b)).rows();
-        std::copy(rest.begin(), rest.end(), atRest_.begin() + b * 16);
+    if (tableChanged || atRest_.size() != bones * 16) {
+        atRest_.resize(bones * 16);
+        for (std::size_t b = 0; b < bones; ++b) {
+            const auto& rest = mesh.atRestTransform(static_cast<int>(b)).rows();
+            std::copy(rest.begin(), rest.end(), atRest_.begin() + b * 16);
+        }
     }
+    newPalette_.resize(bones);
     // The VertexBuffer's position scale and bias go into the palette's
     // position rows (once per bone), so the kernels and the compute shader
     // take the raw positions with scale 1 and bias 0 (no fold per run).
