@@ -34,12 +34,6 @@ inline __m128 cross(__m128 u, __m128 v) noexcept {
     return _mm_sub_ps(_mm_mul_ps(yzx(u), zxy(v)), _mm_mul_ps(zxy(u), yzx(v)));
 }
 
-/// The sum of v's four elements, in every element.
-inline __m128 sumAll(__m128 v) noexcept {
-    const __m128 pairs = _mm_add_ps(v, _mm_shuffle_ps(v, v, _MM_SHUFFLE(1, 0, 3, 2)));
-    return _mm_add_ps(pairs, _mm_shuffle_ps(pairs, pairs, _MM_SHUFFLE(2, 3, 0, 1)));
-}
-
 }  // namespace
 
 void paletteSse2(const PaletteJob& job) noexcept {
@@ -76,7 +70,7 @@ void paletteSse2(const PaletteJob& job) noexcept {
         // plus m[i] . (bx, by, bz, 0) in w (skipped for 1 and 0, which leave
         // a non-finite row as it is rather than NaN).
         if (fold)
-            for (__m128& row : m) row = _mm_add_ps(_mm_mul_ps(row, scale), _mm_and_ps(sumAll(_mm_mul_ps(row, bias)), wOnly));
+            for (__m128& row : m) row = foldScaleBias(row, scale, bias);
         PaletteEntry& e = job.output[b];
         _mm_storeu_ps(e.position, m[0]);
         _mm_storeu_ps(e.position + 4, m[1]);

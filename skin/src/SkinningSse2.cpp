@@ -274,17 +274,10 @@ void skinRun(const SkinningJob& j, bool packed, std::size_t runFirst, std::size_
         for (int r = 0; r < 6; ++r) y[r] = _mm_add_ps(y[r], _mm_mul_ps(w, _mm_load_ps(e + 4 * r)));
     }
     if (!isIdentityScaleBias(j.positionScale, j.positionBias)) {
-        // P (s p + b) = (P s) p + P b: columns times s, P b added to the translation.
         const float s = j.positionScale;
-        const float* b = j.positionBias.data();
-        alignas(16) float p[12];
-        for (int r = 0; r < 3; ++r) _mm_store_ps(p + 4 * r, y[r]);
-        for (int r = 0; r < 3; ++r) {
-            float* row = p + 4 * r;
-            row[3] += row[0] * b[0] + row[1] * b[1] + row[2] * b[2];
-            row[0] *= s, row[1] *= s, row[2] *= s;
-            y[r] = _mm_load_ps(row);
-        }
+        const __m128 scale = _mm_setr_ps(s, s, s, 1.0f);
+        const __m128 bias = _mm_setr_ps(j.positionBias[0], j.positionBias[1], j.positionBias[2], 0.0f);
+        for (int r = 0; r < 3; ++r) y[r] = foldScaleBias(y[r], scale, bias);
     }
     alignas(16) float flat[24];
     for (int r = 0; r < 6; ++r) _mm_store_ps(flat + 4 * r, y[r]);

@@ -1,7 +1,8 @@
 // Internal: what the SSE2 kernels (SkinningSse2.cpp, MorphSse2.cpp,
 // PaletteSse2.cpp) share: xyz triples to and from x, y, z lanes, a per-lane
-// select, the reciprocal length. The AVX2 versions are in Avx2.h. Include
-// inside M3G_SKIN_X86 only.
+// select, the sum of four elements, the position scale and bias fold, the
+// reciprocal length. The AVX2 versions are in Avx2.h. Include inside
+// M3G_SKIN_X86 only.
 #pragma once
 
 #include <emmintrin.h>
@@ -32,6 +33,22 @@ inline void soa3ToXyz(__m128 x, __m128 y, __m128 z, __m128& r0, __m128& r1, __m1
     r0 = _mm_shuffle_ps(xyLo, zx, _MM_SHUFFLE(2, 0, 1, 0));           // x0 y0 z0 x1
     r1 = _mm_shuffle_ps(yz, xyHi, _MM_SHUFFLE(1, 0, 2, 0));           // y1 z1 x2 y2
     r2 = _mm_shuffle_ps(zx, yz, _MM_SHUFFLE(3, 1, 3, 1));             // z2 x3 y3 z3
+}
+
+/// The sum of v's four elements, in every element.
+inline __m128 sumAll(__m128 v) noexcept {
+    const __m128 pairs = _mm_add_ps(v, _mm_shuffle_ps(v, v, _MM_SHUFFLE(1, 0, 3, 2)));
+    return _mm_add_ps(pairs, _mm_shuffle_ps(pairs, pairs, _MM_SHUFFLE(2, 3, 0, 1)));
+}
+
+/// A position row (r0 r1 r2 r3) of P with a position scale s and bias b
+/// folded in, P (s p + b) = (P s) p + P b: (r0 s, r1 s, r2 s,
+/// r0 b0 + r1 b1 + r2 b2 + r3), given scale = (s, s, s, 1) and
+/// bias = (b0, b1, b2, 0). The palette folds its rows so; the run kernel a
+/// job's own scale and bias.
+inline __m128 foldScaleBias(__m128 row, __m128 scale, __m128 bias) noexcept {
+    const __m128 wOnly = _mm_castsi128_ps(_mm_setr_epi32(0, 0, 0, -1));
+    return _mm_add_ps(_mm_mul_ps(row, scale), _mm_and_ps(sumAll(_mm_mul_ps(row, bias)), wOnly));
 }
 
 /// mask ? a : b per element.

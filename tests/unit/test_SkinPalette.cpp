@@ -27,13 +27,20 @@ constexpr Mat kIdentity{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
 
 Mat translation(float x, float y, float z) { return {1, 0, 0, x, 0, 1, 0, y, 0, 0, 1, z, 0, 0, 0, 1}; }
 
-PaletteEntry compute(const Mat& boneToMesh, const Mat& atRest) {
-    PaletteEntry e{};
+/// A job over `boneCount` bones of the two matrix arrays into `output`.
+PaletteJob paletteJob(std::size_t boneCount, std::span<const float> boneToMesh, std::span<const float> atRest,
+                      std::span<PaletteEntry> output) {
     PaletteJob job;
-    job.boneCount = 1;
+    job.boneCount = boneCount;
     job.boneToMesh = boneToMesh;
     job.atRest = atRest;
-    job.output = std::span<PaletteEntry>(&e, 1);
+    job.output = output;
+    return job;
+}
+
+PaletteEntry compute(const Mat& boneToMesh, const Mat& atRest) {
+    PaletteEntry e{};
+    const PaletteJob job = paletteJob(1, boneToMesh, atRest, std::span<PaletteEntry>(&e, 1));
     EXPECT_TRUE(job.run());
     return e;
 }
@@ -56,11 +63,7 @@ TEST(SkinPalette, LayoutIsStd430Compatible) {
 TEST(SkinPalette, ValidateChecksSizes) {
     std::vector<float> m(32, 0.0f);
     std::vector<PaletteEntry> out(2);
-    PaletteJob job;
-    job.boneCount = 2;
-    job.boneToMesh = m;
-    job.atRest = m;
-    job.output = out;
+    PaletteJob job = paletteJob(2, m, m, out);
     EXPECT_TRUE(job.validate());
     job.boneToMesh = std::span<const float>(m).first(31);
     EXPECT_FALSE(job.validate());
@@ -136,11 +139,7 @@ TEST(SkinPalette, SeveralBonesAndTheBottomRowIsIgnored) {
     r.insert(r.end(), kIdentity.begin(), kIdentity.end());
     r.insert(r.end(), kIdentity.begin(), kIdentity.end());
     std::vector<PaletteEntry> out(2);
-    PaletteJob job;
-    job.boneCount = 2;
-    job.boneToMesh = a;
-    job.atRest = r;
-    job.output = out;
+    const PaletteJob job = paletteJob(2, a, r, out);
     ASSERT_TRUE(job.run());
     expectRows(out[0].position, {1, 0, 0, 1, 0, 1, 0, 0, 0, 0, 1, 0}, "bone 0");
     expectRows(out[1].position, {1, 0, 0, 0, 0, 1, 0, 7, 0, 0, 1, 0}, "bone 1");
@@ -168,11 +167,7 @@ TEST(SkinPalette, SimdPathsAgreeWithPlainLoop) {
     const std::size_t bones = a.size() / 16;
     ASSERT_EQ(bones % 2, 1u);
     std::vector<PaletteEntry> plain(bones);
-    PaletteJob job;
-    job.boneCount = bones;
-    job.boneToMesh = a;
-    job.atRest = r;
-    job.output = plain;
+    PaletteJob job = paletteJob(bones, a, r, plain);
     job.isa = Isa::Scalar;
     ASSERT_TRUE(job.run());
     for (Isa isa : {Isa::Sse2, Isa::Avx2}) {
@@ -212,11 +207,7 @@ TEST(SkinPalette, PositionScaleAndBiasFoldIntoThePositionRows) {
         };
         const std::vector<float> boneToMesh = thenIdentity(a), atRest = thenIdentity(r);
         std::vector<PaletteEntry> out(2);
-        PaletteJob job;
-        job.boneCount = 2;
-        job.boneToMesh = boneToMesh;
-        job.atRest = atRest;
-        job.output = out;
+        PaletteJob job = paletteJob(2, boneToMesh, atRest, out);
         job.isa = isa;
         ASSERT_TRUE(job.run());
         expectRows(out[0].position, {0, -1, 0, 1, 1, 0, 0, 2, 0, 0, 1, 4}, "unfolded position");
