@@ -463,3 +463,21 @@ TEST(SkinnedMeshDeform, InputsOnlyKeepsTheChangeDetectionWithoutRunningTheKernel
     EXPECT_FALSE(d.update(*r.mesh, Output::Vertices));
     EXPECT_TRUE(d.update(*r.mesh, Output::InputsOnly));
 }
+
+TEST(SkinnedMeshDeform, BoneAddedAfterAnUpdateUsesItsAtRestMatrix) {
+    // Bone 0 at the origin first; bone 1, at (0, 5, 0) when added after an
+    // update, has at rest T(0, -5, 0): at rest vertex 1 stays where it is,
+    // and moving bone 1 by (1, 0, 0) moves it by that much.
+    Rig r(makeVB({1, 0, 0, 2, 5, 0}), 2);
+    r.mesh->addTransform(r.bones[0], 1, 0, 1);
+    MeshDeformer d;
+    ASSERT_TRUE(d.update(*r.mesh));
+    r.bones[1]->setTranslation(0, 5, 0);
+    r.mesh->addTransform(r.bones[1], 1, 1, 1);
+    ASSERT_TRUE(d.update(*r.mesh));
+    expectPosition(d, 0, 1, 0, 0);
+    expectPosition(d, 1, 2, 5, 0);
+    r.bones[1]->setTranslation(1, 5, 0);
+    ASSERT_TRUE(d.update(*r.mesh));
+    expectPosition(d, 1, 3, 5, 0);
+}
