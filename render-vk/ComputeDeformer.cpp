@@ -26,6 +26,12 @@ std::uint32_t elements(std::size_t n, const char* what) {
     return static_cast<std::uint32_t>(n);
 }
 
+/// Copies `count` 4-byte elements. A zero count copies nothing: an empty
+/// span's data() may be null, which memcpy must not receive even for 0 bytes.
+void copyElements(void* dst, const void* src, std::size_t count) noexcept {
+    if (count != 0) std::memcpy(dst, src, count * 4);
+}
+
 /// The output buffer holds `count` floats at `offset` (elements).
 void requireRoom(const Buffer& out, std::uint32_t offset, std::size_t count, const char* stream) {
     if (offset == kNoStream) return;
@@ -178,17 +184,17 @@ void ComputeDeformer::recordSkin(VkCommandBuffer cmd, GpuDeformState& state, con
         state.positionsIn = elements(slots * 2, "the skinning inputs");
         state.normalsIn = normals ? elements(slots * 2 + n * 3, "the skinning inputs") : kNoStream;
         state.tableVertices = elements(stride == 0 ? 0 : slots / stride, "the influence table");
-        std::memcpy(base + state.bonesIn, in.bones.data(), slots * 4);
-        std::memcpy(base + state.weightsIn, in.weights.data(), slots * 4);
-        std::memcpy(base + state.positionsIn, in.positions.data(), n * 3 * 4);
-        if (normals) std::memcpy(base + state.normalsIn, in.normals.data(), n * 3 * 4);
+        copyElements(base + state.bonesIn, in.bones.data(), slots);
+        copyElements(base + state.weightsIn, in.weights.data(), slots);
+        copyElements(base + state.positionsIn, in.positions.data(), n * 3);
+        if (normals) copyElements(base + state.normalsIn, in.normals.data(), n * 3);
         state.inputStamp = inputStamp;
         state.hasInputs = true;
     }
 
     const std::size_t paletteBytes = in.palette.size() * sizeof(skin::PaletteEntry);
     void* palette = frameData(state, paletteBytes);
-    if (paletteBytes) std::memcpy(palette, in.palette.data(), paletteBytes);
+    copyElements(palette, in.palette.data(), paletteBytes / 4);
 
     SkinParams p{};
     p.positionBias[0] = in.positionBias[0];
@@ -252,10 +258,10 @@ void ComputeDeformer::recordMorph(VkCommandBuffer cmd, GpuDeformState& state,
             if (attr.components == 0) continue;
             const auto size = n * static_cast<std::size_t>(attr.components);
             state.valuesIn[static_cast<std::size_t>(a)] = elements(at, "the morph inputs");
-            std::memcpy(base + at, attr.base.data(), size * 4);
+            copyElements(base + at, attr.base.data(), size);
             at += size;
             for (const auto& t : attr.targets) {
-                std::memcpy(base + at, t.data(), size * 4);
+                copyElements(base + at, t.data(), size);
                 at += size;
             }
         }
@@ -264,7 +270,7 @@ void ComputeDeformer::recordMorph(VkCommandBuffer cmd, GpuDeformState& state,
     }
 
     void* w = frameData(state, weights.size() * sizeof(float));
-    if (!weights.empty()) std::memcpy(w, weights.data(), weights.size() * sizeof(float));
+    copyElements(w, weights.data(), weights.size());
     VkDescriptorSet set = VK_NULL_HANDLE;
     for (int a = 0; a < D::kMorphAttributes; ++a) {
         const auto& attr = attributes[static_cast<std::size_t>(a)];
