@@ -49,7 +49,9 @@ TEST_F(VkTest, SoakGpuMirrorsReturnToTheSameCountsAfterEachReload) {
     // 100 frames from the second cycle end to the last: 16 MiB is 0.16 MiB a frame.
     const std::int64_t growth = static_cast<std::int64_t>(r.cycleEnds.back().residentBytes) -
                                 static_cast<std::int64_t>(ref.residentBytes);
-    EXPECT_LT(growth, 16 << 20) << r.verdict;
+    if (!m3gtest::kAddressSanitizer) {
+        EXPECT_LT(growth, 16 << 20) << r.verdict;
+    }
     EXPECT_EQ(r.validationMessages, 0u);
     std::printf("soak: %s\n", r.verdict.c_str());
 }
@@ -62,6 +64,8 @@ TEST_F(VkTest, SoakGpuMirrorsReturnToTheSameCountsAfterEachReload) {
 // uniform reads that made lavapipe 22.3 compile a shader per draw no longer
 // trigger it here, so this is a general leak check, not a test of that cause.)
 TEST_F(VkTest, SampleSceneFramesDoNotGrowResidentMemory) {
+    if (m3gtest::kAddressSanitizer)
+        GTEST_SKIP() << "AddressSanitizer's quarantine keeps freed memory resident: no bound to check";
     m3g::Ref<m3g::World> world = m3gcli::buildSampleScene();
     m3g::Graphics3D* g = m3g::Graphics3D::getInstance();
     m3g::Ref<m3g::Graphics> target(new m3g::Graphics(64, 48));
