@@ -9,9 +9,11 @@
 // covers the bytes as given):
 //   1. lenient load; an IOException ends the input;
 //   2. prepareScene (the World, auto-framing, camera fix-up), no exception;
-//   3. three frames into a 32x32 Graphics surface: t = 0 with CPU
-//      deformation, t = 977 ms with compute deformation, t = 977 ms again on
-//      the CPU (a mode switch with nothing changed); then up to eight loaded
+//   3. three 32x32 frames: t = 0 with CPU deformation into a Graphics
+//      surface (an RGB target, as `m3g render` draws), t = 977 ms with
+//      compute deformation into an RGBA Image2D (where RGBA background
+//      images are drawn), t = 977 ms again on the CPU into the Graphics (a
+//      mode switch with nothing changed); then up to eight loaded
 //      Mesh, Sprite3D and Group nodes in immediate mode, render(Node, null);
 //   4. picks through the active camera at two points of the viewport;
 //   5. everything dropped, one clear-only frame; steps 1-5 once more, after
@@ -99,17 +101,20 @@ inline void drawAndPick(m3gcli::PreparedScene& scene, const m3g::LoadResult& loa
     using namespace m3g;
     Graphics3D* g = Graphics3D::getInstance();
     const std::uint64_t messages = vk::validationMessageCount();
+    static Ref<Image2D> rgbaTarget(new Image2D(Image2D::RGBA, kTargetSize, kTargetSize));
     struct Frame {
         int time, mode;
+        bool rgba;
         const char* name;
     };
-    const Frame frames[] = {{0, Graphics3D::SKINNING_CPU, "frame t=0 (CPU deformation)"},
-                            {977, Graphics3D::SKINNING_COMPUTE, "frame t=977 (compute deformation)"},
-                            {977, Graphics3D::SKINNING_CPU, "frame t=977 (back to CPU deformation)"}};
+    const Frame frames[] = {{0, Graphics3D::SKINNING_CPU, false, "frame t=0 (CPU deformation, Graphics)"},
+                            {977, Graphics3D::SKINNING_COMPUTE, true, "frame t=977 (compute deformation, RGBA Image2D)"},
+                            {977, Graphics3D::SKINNING_CPU, false, "frame t=977 (back to CPU deformation, Graphics)"}};
     for (const Frame& f : frames) {
         allowDocumented("animate", false, [&] { scene.world->animate(f.time); });
         g->setSkinningMode(f.mode);
-        g->bindTarget(&surface, true, 0);
+        if (f.rgba) g->bindTarget(rgbaTarget.get(), true, 0);
+        else g->bindTarget(&surface, true, 0);
         allowDocumented(f.name, false, [&] { g->render(scene.world.get()); });
         g->releaseTarget();
         expectNoValidation(messages, f.name);
