@@ -4,16 +4,12 @@
 // M3G_VK_VALIDATION=0: its messages are findings.
 #include <cstdlib>
 
-#include <dlfcn.h>
-
 #include "FuzzMain.h"
 #include "FuzzRender.h"
+#include "HoldDriver.h"
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    // Lavapipe held loaded past the Vulkan loader's dlclose at exit: its
-    // globals then still point at its heap blocks, which LeakSanitizer would
-    // otherwise report from an "<unknown module>" (tests/vk/VkTestSupport.cpp).
-    dlopen("libvulkan_lvp.so", RTLD_NOW | RTLD_NODELETE);
+    m3gtest::holdLavapipeLoaded();  // past the loader's dlclose at exit (HoldDriver.h)
     if (!std::getenv("M3G_VK_VALIDATION")) m3g::vk::requestValidation(true);
     // The device, the renderer and its pipelines for a plain clear exist
     // before the first input, so that its leak check sees none of them.

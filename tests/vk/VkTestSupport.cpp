@@ -3,21 +3,14 @@
 #include <cstdlib>
 #include <filesystem>
 
-#ifdef __SANITIZE_ADDRESS__
-#include <dlfcn.h>
-#endif
+#include "HoldDriver.h"
 
 namespace m3gtest {
 
 #ifdef __SANITIZE_ADDRESS__
 namespace {
-// Lavapipe keeps heap blocks reachable from its own globals until the Vulkan
-// loader dlcloses it at vkDestroyInstance; once its data segment is gone
-// LeakSanitizer sees those blocks as leaked (240 bytes a process, from an
-// "<unknown module>" no suppression can name). Held loaded, as in any
-// process that does not unload its driver, it leaks nothing, so these tests
-// keep the leak check on for m3g-vk's own code.
-[[maybe_unused]] const bool gDriverHeld = dlopen("libvulkan_lvp.so", RTLD_NOW | RTLD_NODELETE) != nullptr;
+// The leak check stays on for these tests (HoldDriver.h says why this is needed).
+[[maybe_unused]] const bool gDriverHeld = holdLavapipeLoaded();
 }  // namespace
 #endif
 
