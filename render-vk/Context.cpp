@@ -750,6 +750,8 @@ RenderStats renderStats() {
     if (!Context::exists()) return s;
     Context& c = Context::get();
     s.pipelinesCreated = c.pipelinesCreated;
+    s.pipelinesEvicted = c.pipelinesEvicted;
+    s.livePipelines = static_cast<std::uint64_t>(std::max<std::int64_t>(0, c.livePipelines));
     s.draws = c.draws;
     s.bufferUploads = c.bufferUploads;
     s.textureUploads = c.textureUploads;

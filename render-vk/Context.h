@@ -126,9 +126,9 @@ public:
     VkCommandPool commandPool() const noexcept { return pool_; }
     std::mutex& poolMutex() noexcept { return poolMutex_; }
 
-    std::atomic<std::uint64_t> pipelinesCreated{0}, draws{0}, bufferUploads{0}, textureUploads{0}, frames{0},
-        computeDispatches{0};
-    std::atomic<std::int64_t> liveBuffers{0}, liveTextures{0}, memoryBytes{0};
+    std::atomic<std::uint64_t> pipelinesCreated{0}, pipelinesEvicted{0}, draws{0}, bufferUploads{0},
+        textureUploads{0}, frames{0}, computeDispatches{0};
+    std::atomic<std::int64_t> liveBuffers{0}, liveTextures{0}, livePipelines{0}, memoryBytes{0};
 
     ~Context();
     Context(const Context&) = delete;

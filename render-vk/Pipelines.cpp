@@ -1,6 +1,8 @@
 #include "Pipelines.h"
 
+#include <algorithm>
 #include <array>
+#include <vector>
 
 #include "m3g_frag.h"  // generated from shaders/ by glslangValidator at build time
 #include "m3g_vert.h"
@@ -31,7 +33,7 @@ VkPipelineColorBlendAttachmentState blendState(std::uint8_t blend, std::uint8_t 
 
 }  // namespace
 
-Pipelines::Pipelines(Context& ctx) : ctx_(ctx) {
+Pipelines::Pipelines(Context& ctx, std::size_t capacity) : ctx_(ctx), capacity_(std::max<std::size_t>(1, capacity)) {
     VkDevice device = ctx.device();
     VkDescriptorSetLayoutBinding ub{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1,
                                     VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
@@ -55,7 +57,7 @@ Pipelines::Pipelines(Context& ctx) : ctx_(ctx) {
 
 Pipelines::~Pipelines() {
     VkDevice device = ctx_.device();
-    for (auto& [key, p] : pipelines_) vkDestroyPipeline(device, p, nullptr);
+    for (auto& [key, entry] : pipelines_) destroy(entry.pipeline);
     vkDestroyPipelineCache(device, cache_, nullptr);
     vkDestroyShaderModule(device, vert_, nullptr);
     vkDestroyShaderModule(device, frag_, nullptr);
@@ -66,10 +68,43 @@ Pipelines::~Pipelines() {
 
 VkPipeline Pipelines::get(const PipelineKey& key) {
     auto it = pipelines_.find(key.packed());
-    if (it != pipelines_.end()) return it->second;
-    VkPipeline p = create(key);
-    pipelines_.emplace(key.packed(), p);
-    return p;
+    if (it == pipelines_.end()) it = pipelines_.emplace(key.packed(), Entry{create(key), 0}).first;
+    it->second.lastFrame = frame_;
+    return it->second.pipeline;
+}
+
+void Pipelines::destroy(VkPipeline pipeline) noexcept {
+    vkDestroyPipeline(ctx_.device(), pipeline, nullptr);
+    --ctx_.livePipelines;
+}
+
+void Pipelines::endFrame() {
+    if (pipelines_.size() > capacity_) {
+        // Oldest first; this frame's stay even beyond the capacity (a frame
+        // that needs them all would otherwise recreate them every frame).
+        std::vector<std::pair<std::uint64_t, std::uint64_t>> byAge;  // (lastFrame, key)
+        for (const auto& [key, entry] : pipelines_)
+            if (entry.lastFrame < frame_) byAge.emplace_back(entry.lastFrame, key);
+        const std::size_t excess = std::min(pipelines_.size() - capacity_, byAge.size());
+        std::partial_sort(byAge.begin(), byAge.begin() + static_cast<std::ptrdiff_t>(excess), byAge.end());
+        for (std::size_t i = 0; i < excess; ++i) {
+            auto it = pipelines_.find(byAge[i].second);
+            destroy(it->second.pipeline);
+            pipelines_.erase(it);
+            ++ctx_.pipelinesEvicted;
+        }
+        if (excess > 0 && createdThroughCache_ > 4 * capacity_) {
+            // Every pipeline is independent of the cache it was made with.
+            VkPipelineCache fresh = VK_NULL_HANDLE;
+            VkPipelineCacheCreateInfo ci{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
+            check(vkCreatePipelineCache(ctx_.device(), &ci, nullptr, &fresh), "vkCreatePipelineCache");
+            vkDestroyPipelineCache(ctx_.device(), cache_, nullptr);
+            cache_ = fresh;
+            createdThroughCache_ = 0;
+            ++cacheResets_;
+        }
+    }
+    ++frame_;
 }
 
 void Pipelines::prewarm(std::uint8_t samples) {
@@ -196,6 +231,8 @@ VkPipeline Pipelines::create(const PipelineKey& key) {
     VkPipeline pipeline;
     check(vkCreateGraphicsPipelines(ctx_.device(), cache_, 1, &gi, nullptr, &pipeline), "vkCreateGraphicsPipelines");
     ++ctx_.pipelinesCreated;
+    ++ctx_.livePipelines;
+    ++createdThroughCache_;
     return pipeline;
 }
 

@@ -3,6 +3,7 @@
 // other fixed-function state is uniform data or Vulkan 1.3 dynamic state.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <unordered_map>
 
@@ -52,33 +53,63 @@ struct PipelineKey {
     }
 };
 
+/// A renderer's pipelines, created on first use and kept while they are
+/// among the `capacity` most recently used. The key space is large (blend x
+/// write mask x texture units x fog x up to 8 lights' modes): a long-lived
+/// viewer that opens many files would otherwise keep every combination it
+/// ever drew. Real scenes use a few dozen keys (prewarm makes 40).
 class Pipelines {
 public:
-    explicit Pipelines(Context& ctx);
+    static constexpr std::size_t kDefaultCapacity = 256;
+
+    /// `capacity` >= 1: pipelines kept between frames (a single frame may
+    /// use more; none of those is destroyed before the frame has ended).
+    explicit Pipelines(Context& ctx, std::size_t capacity = kDefaultCapacity);
     ~Pipelines();
 
     VkPipelineLayout layout() const noexcept { return layout_; }
     VkDescriptorSetLayout uniformSetLayout() const noexcept { return uniformSet_; }
     VkDescriptorSetLayout textureSetLayout() const noexcept { return textureSet_; }
 
-    /// The pipeline for `key`, created on first use.
+    /// The pipeline for `key`, created on first use; marked used by the
+    /// current frame. Valid until endFrame() of a later frame.
     VkPipeline get(const PipelineKey& key);
     /// Creates the pipelines of the common keys ahead of the first frame.
     void prewarm(std::uint8_t samples);
+    /// Called once the GPU has finished the frame (its fence waited): when
+    /// more than capacity() pipelines exist, destroys the least recently
+    /// used ones that this frame did not use, down to capacity(). Then a new
+    /// frame begins.
+    void endFrame();
     std::size_t size() const noexcept { return pipelines_.size(); }
+    std::size_t capacity() const noexcept { return capacity_; }
+    /// How many times endFrame() has replaced the VkPipelineCache.
+    std::size_t cacheResets() const noexcept { return cacheResets_; }
 
     Pipelines(const Pipelines&) = delete;
     Pipelines& operator=(const Pipelines&) = delete;
 
 private:
+    struct Entry {
+        VkPipeline pipeline = VK_NULL_HANDLE;
+        std::uint64_t lastFrame = 0;
+    };
     VkPipeline create(const PipelineKey& key);
+    void destroy(VkPipeline pipeline) noexcept;
 
     Context& ctx_;
+    std::size_t capacity_;
+    std::uint64_t frame_ = 1;
+    /// Pipelines created through cache_ since it was (re)created: the
+    /// VkPipelineCache keeps every shader variant it has seen, so it is
+    /// replaced after evictions once it has seen several capacities' worth.
+    std::size_t createdThroughCache_ = 0;
+    std::size_t cacheResets_ = 0;
     VkDescriptorSetLayout uniformSet_ = VK_NULL_HANDLE, textureSet_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkShaderModule vert_ = VK_NULL_HANDLE, frag_ = VK_NULL_HANDLE;
     VkPipelineCache cache_ = VK_NULL_HANDLE;
-    std::unordered_map<std::uint64_t, VkPipeline> pipelines_;
+    std::unordered_map<std::uint64_t, Entry> pipelines_;
 };
 
 }  // namespace m3g::vk

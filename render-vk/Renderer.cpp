@@ -903,6 +903,7 @@ void Renderer::release(Graphics3D& g3d) {
     check(vkWaitForFences(ctx_->device(), 1, &fence_, VK_TRUE, UINT64_MAX), "vkWaitForFences (frame)");
     ++ctx_->frames;
     resources_->endFrame();
+    pipelines_->endFrame();
     for (Buffer& b : retiredQuads_) ctx_->destroy(b);
     retiredQuads_.clear();
     // A window screenshot that could not be taken stays not ready.

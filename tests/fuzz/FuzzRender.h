@@ -47,10 +47,13 @@ namespace m3gfuzz {
 /// What a second pass over an input must leave as the first left it.
 struct RendererBalance {
     std::uint64_t liveBuffers = 0, liveTextures = 0, deviceMemoryBytes = 0;
+    /// The second pass draws with the keys of the first: it finds them all
+    /// in the pipeline cache and makes none.
+    std::uint64_t livePipelines = 0;
 
     static RendererBalance now() {
         const m3g::vk::RenderStats s = m3g::vk::renderStats();
-        return {s.liveBuffers, s.liveTextures, s.deviceMemoryBytes};
+        return {s.liveBuffers, s.liveTextures, s.deviceMemoryBytes, s.livePipelines};
     }
 };
 
@@ -201,6 +204,9 @@ inline void checkRenderOnce(std::span<const std::uint8_t> bytes) {
            "device memory kept by a second pass over the input: " +
                std::to_string(before.deviceMemoryBytes) + " -> " + std::to_string(after.deviceMemoryBytes) +
                " bytes");
+    expect(after.livePipelines == before.livePipelines,
+           "pipelines made by a second pass over the input: " + std::to_string(before.livePipelines) + " -> " +
+               std::to_string(after.livePipelines));
 }
 
 /// The render target: the checksum-repaired form only (the bytes as given

@@ -84,6 +84,11 @@ bool litColorClamping() noexcept;
 /// Counters since the device was created.
 struct RenderStats {
     std::uint64_t pipelinesCreated = 0;
+    /// Pipelines destroyed because their renderer's cache was full (each
+    /// renderer keeps at most its most recently used ones, see
+    /// docs/rendering.md "Pipeline cache").
+    std::uint64_t pipelinesEvicted = 0;
+    std::uint64_t livePipelines = 0;  ///< graphics pipelines alive now, all renderers
     std::uint64_t draws = 0;
     std::uint64_t bufferUploads = 0;
     std::uint64_t textureUploads = 0;
