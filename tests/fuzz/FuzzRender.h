@@ -17,8 +17,8 @@
 //      Mesh, Sprite3D and Group nodes in immediate mode, render(Node, null);
 //   4. picks through the active camera at two points of the viewport;
 //   5. everything dropped, one clear-only frame; steps 1-5 once more, after
-//      which the renderer's live buffers, textures and device memory must be
-//      back where the first pass left them. (The first pass may grow the
+//      which the renderer's live buffers, textures, pipelines and device
+//      memory must be back where the first pass left them. (The first pass may grow the
 //      renderer's pools, uniform chunks and sprite quads, to a new high
 //      water mark that the renderer keeps; an identical second pass may not:
 //      growth there is a leak per load.)

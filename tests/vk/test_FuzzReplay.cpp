@@ -4,8 +4,8 @@
 // input for the renderer too) and every file of the shared corpus is loaded,
 // drawn with CPU and compute deformation and in immediate mode, picked, and
 // dropped twice, with no exception outside the documented ones, no
-// validation message and no GPU buffer, texture or memory kept by the
-// second pass. Under the ASan + UBSan build of scripts/test this is also
+// validation message and no GPU buffer, texture, pipeline or memory kept
+// by the second pass. Under the ASan + UBSan build of scripts/test this is also
 // the memory check of the renderer on those inputs.
 #include "VkTestSupport.h"
 
