@@ -147,10 +147,6 @@ inline void drawAndPick(m3gcli::PreparedScene& scene, const m3g::LoadResult& loa
     }
 }
 
-}  // namespace detail
-
-namespace detail {
-
 /// Steps 1-4 and the drop of step 5, one pass; false if the load failed.
 inline bool renderPass(std::span<const std::uint8_t> bytes, m3g::Graphics& surface) {
     using namespace m3g;

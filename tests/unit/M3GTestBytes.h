@@ -158,4 +158,19 @@ inline std::vector<std::filesystem::path> corpusFiles(const std::filesystem::pat
     return files;
 }
 
+#ifdef M3G_FUZZ_REGRESSIONS_DIR
+/// The committed reproducers of one fuzz target (tests/fuzz/regressions/
+/// `target`), sorted; empty when there are none.
+inline std::vector<std::filesystem::path> regressionFiles(const std::string& target) {
+    std::vector<std::filesystem::path> files;
+    const std::filesystem::path dir = std::filesystem::path(M3G_FUZZ_REGRESSIONS_DIR) / target;
+    std::error_code ec;
+    if (!std::filesystem::is_directory(dir, ec)) return files;
+    for (const auto& e : std::filesystem::directory_iterator(dir))
+        if (e.is_regular_file()) files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+#endif
+
 }  // namespace m3gtest

@@ -6,8 +6,6 @@
 // of each input.
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <filesystem>
 #include <span>
 #include <string>
 #include <vector>
@@ -15,24 +13,11 @@
 #include "FuzzChecks.h"
 #include "M3GTestBytes.h"
 
-namespace fs = std::filesystem;
-
 namespace {
-
-std::vector<fs::path> regressionFiles(const std::string& target) {
-    std::vector<fs::path> files;
-    const fs::path dir = fs::path(M3G_FUZZ_REGRESSIONS_DIR) / target;
-    std::error_code ec;
-    if (!fs::is_directory(dir, ec)) return files;
-    for (const auto& e : fs::directory_iterator(dir))
-        if (e.is_regular_file()) files.push_back(e.path());
-    std::sort(files.begin(), files.end());
-    return files;
-}
 
 template <class Check>
 void replay(const std::string& target, Check check) {
-    const auto files = regressionFiles(target);
+    const auto files = m3gtest::regressionFiles(target);
     for (const auto& f : files) {
         SCOPED_TRACE(f.string());
         const m3gtest::Bytes bytes = m3gtest::readFile(f);

@@ -9,39 +9,22 @@
 // the memory check of the renderer on those inputs.
 #include "VkTestSupport.h"
 
-#include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <vector>
 
 #include "FuzzRender.h"
+#include "M3GTestBytes.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<fs::path> filesUnder(const fs::path& dir, const std::string& extension) {
-    std::vector<fs::path> files;
-    std::error_code ec;
-    if (!fs::is_directory(dir, ec)) return files;
-    for (const auto& e : fs::recursive_directory_iterator(dir))
-        if (e.is_regular_file() && (extension.empty() || e.path().extension() == extension)) files.push_back(e.path());
-    std::sort(files.begin(), files.end());
-    return files;
-}
-
-m3gfuzz::Bytes readBytes(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return m3gfuzz::Bytes(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
 /// checkRender on each file; returns how many were checked.
 std::size_t replay(const std::vector<fs::path>& files) {
     for (const fs::path& f : files) {
         SCOPED_TRACE(f.string());
-        const m3gfuzz::Bytes bytes = readBytes(f);
+        const m3gtest::Bytes bytes = m3gtest::readFile(f);
         EXPECT_FALSE(bytes.empty()) << "unreadable or empty";
         try {
             m3gfuzz::checkRender(std::span<const std::uint8_t>(bytes));
@@ -59,7 +42,7 @@ using m3gtest::VkTest;
 TEST_F(VkTest, FuzzReproducersRenderWithinTheRenderFuzzRules) {
     std::size_t total = 0;
     for (const char* target : {"render", "loader", "roundtrip", "png"}) {
-        const std::size_t n = replay(filesUnder(fs::path(M3G_FUZZ_REGRESSIONS_DIR) / target, ""));
+        const std::size_t n = replay(m3gtest::regressionFiles(target));
         std::printf("[ replayed ] %zu %s reproducer(s)\n", n, target);
         total += n;
     }
@@ -68,8 +51,10 @@ TEST_F(VkTest, FuzzReproducersRenderWithinTheRenderFuzzRules) {
 }
 
 TEST_F(VkTest, CorpusFilesRenderWithinTheRenderFuzzRules) {
-    const fs::path corpus = M3G_CORPUS_DIR;
-    const std::vector<fs::path> files = filesUnder(corpus / "models", ".m3g");
-    if (files.empty()) GTEST_SKIP() << "shared corpus not found at " << corpus << " (no .m3g under models/)";
+    const auto corpus = m3gtest::corpusDir();
+    if (!corpus) GTEST_SKIP() << "shared corpus not found at " << M3G_CORPUS_DIR << " (no models/ folder)";
+    std::vector<fs::path> files = m3gtest::corpusFiles(*corpus);
+    std::erase_if(files, [](const fs::path& f) { return f.extension() != ".m3g"; });
+    ASSERT_FALSE(files.empty()) << "no .m3g under " << *corpus / "models";
     std::printf("[ replayed ] %zu corpus file(s)\n", replay(files));
 }
