@@ -1,8 +1,8 @@
 // M3G keyframe animation as glTF animation samplers (glTF 2.0 §3.11).
 //
 // A track's value at world time w is its sequence sampled at sequence time
-// s(w) = refSequenceTime + speed * (w - refWorldTime) (its controller, spec
-// digest §5.14). glTF keys are placed at world time w / 1000 seconds over
+// s(w) = refSequenceTime + speed * (w - refWorldTime) (its controller:
+// JSR-184 1.1, AnimationController). glTF keys are placed at world time w / 1000 seconds over
 // [0, clipEnd]: at every keyframe (repeated for LOOP sequences) and at the
 // ends of the window, so that both agree at every time the clip covers:
 //   STEP, LINEAR          -> STEP, LINEAR (exact)

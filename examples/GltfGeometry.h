@@ -18,16 +18,19 @@ class VertexBuffer;
 namespace m3gcli::gltf {
 
 /// Triangle list of `indices` (its triangleIndices(): strips already
-/// unrolled with alternating winding, spec digest §4.7). With `flip`, the
+/// unrolled with alternating winding, JSR-184 1.1, IndexBuffer.getIndices).
+/// With `flip`, the
 /// second and third index of each triangle are swapped (WINDING_CW, or
 /// CULL_FRONT expressed as back-face culling of the flipped triangles).
 std::vector<std::uint32_t> triangleList(const m3g::IndexBuffer& indices, bool flip);
 
 /// xyz per vertex: scale * raw + bias (the VertexBuffer's position scale and
-/// bias, §4.4); 2-component arrays get z = 0 plus bias.
+/// bias, JSR-184 1.1, VertexBuffer.setPositions); 2-component arrays get
+/// z = 0 plus bias.
 std::vector<float> positions(const m3g::VertexBuffer& vb);
 /// Morph target displacement (target - base), both with the base's scale and
-/// bias (MorphingMesh, §4.9: targets use the base buffer's scale and bias).
+/// bias (JSR-184 1.1, MorphingMesh: targets use the base buffer's scale and
+/// bias).
 std::vector<float> positionDeltas(const m3g::VertexBuffer& base, const m3g::VertexBuffer& target);
 
 /// Unit normals with OpenGL's signed integer mapping (2c + 1) / (2^b - 1).

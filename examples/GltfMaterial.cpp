@@ -99,7 +99,8 @@ PrimitiveLook MaterialWriter::look(const m3g::Appearance& a, const m3g::VertexBu
     const bool lit = mat != nullptr;
     const bool colorArray = vb.getColors() != nullptr;
 
-    // Base colour: what OpenGL ES 1.1 feeds the texture stage (spec digest §5.7).
+    // Base colour: what OpenGL ES 1.1 feeds the texture stage (JSR-184 1.1,
+    // Texture2D: texture application).
     std::array<double, 4> base{1, 1, 1, 1};
     if (lit && !mat->isVertexColorTrackingEnabled()) {
         base = unpack(mat->getColor(m3g::Material::DIFFUSE), true);

@@ -1,5 +1,5 @@
 // M3G transforms as glTF node transforms. An M3G Transformable composes
-// T R S M (spec digest §4.2) where M is any 4x4 matrix; a glTF node has
+// T R S M (JSR-184 1.1, Transformable) where M is any 4x4 matrix; a glTF node has
 // either TRS or a `matrix` that must decompose into TRS (glTF 2.0 §3.5.2).
 // Part of the `m3g export` tool.
 #pragma once

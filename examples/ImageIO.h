@@ -1,5 +1,5 @@
 // PNG reading/writing and image comparison for the m3g tool and the image
-// tests (architecture guide §7: count of pixels whose largest channel
+// tests (the device tests' measure: count of pixels whose largest channel
 // difference exceeds a threshold, and PSNR). Part of m3g_cli_support.
 #pragma once
 

@@ -29,7 +29,7 @@ void overrideBackground(m3g::World& world, std::uint32_t argb);
 /// centre, for turntable frames. The constructor captures the camera's
 /// World-space transform C; setAngle(a) gives it T(center) * Ry(a) *
 /// T(-center) * C, so the camera keeps looking at the same point of the
-/// turning scene. Expressed in the camera's own components (spec §4.29,
+/// turning scene. Expressed in the camera's own components (JSR-184 1.1,
 /// Transformable): T, R, S reset, M = parent-to-World inverse times that.
 class CameraOrbit {
 public:

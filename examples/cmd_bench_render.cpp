@@ -1,5 +1,6 @@
 // m3g bench render: frames per second and CPU cost of rendering .m3g files
-// headless (the renderer issue's performance figures). Not a test: it prints.
+// headless (the figures in docs/rendering.md, "Measuring"). Not a test: it
+// prints.
 //
 //   m3g bench render FILE... [--size WxH] [--frames N]
 //

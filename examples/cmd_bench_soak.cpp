@@ -1,4 +1,5 @@
-// m3g bench soak: memory over thousands of frames (issue 8, "Soak"). Not a
+// m3g bench soak: memory over thousands of frames (docs/rendering.md,
+// "Resources"). Not a
 // speed measurement: it prints resident and GPU memory per reload cycle and
 // a verdict; exit status 0 when both are flat after the warm-up and the
 // validation layer (M3G_VK_VALIDATION=1) reported nothing.

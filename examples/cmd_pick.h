@@ -1,7 +1,7 @@
 // `m3g pick FILE X Y [--time T] [--json] [--lenient]`: load a file, animate
 // its World to T ms (default 0) and pick through the World's active camera at
 // normalised viewport coordinates (X, Y) ((0, 0) top left, (1, 1) bottom
-// right; Group::pick, spec digest §5.13). Prints the RayIntersection or
+// right; JSR-184 1.1, Group.pick). Prints the RayIntersection or
 // "no hit". Part of m3g_cli_support (examples/), not of the library.
 #pragma once
 

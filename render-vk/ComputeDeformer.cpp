@@ -160,7 +160,7 @@ void ComputeDeformer::dispatch(VkCommandBuffer cmd, VkPipeline pipeline, VkDescr
     ++ctx_.computeDispatches;
 }
 
-void ComputeDeformer::recordSkin(VkCommandBuffer cmd, GpuDeformState& state, const detail::SkinInputs& in,
+void ComputeDeformer::recordSkin(VkCommandBuffer cmd, GpuDeformState& state, const frame::SkinInputs& in,
                                  std::uint64_t inputStamp, const Buffer& out, const Streams& streams) {
     const auto n = static_cast<std::size_t>(std::max(in.vertexCount, 0));
     const bool normals = !in.normals.empty();
@@ -217,10 +217,10 @@ void ComputeDeformer::recordSkin(VkCommandBuffer cmd, GpuDeformState& state, con
 }
 
 void ComputeDeformer::recordMorph(VkCommandBuffer cmd, GpuDeformState& state,
-                                  std::span<const detail::MorphAttributeInputs> attributes,
+                                  std::span<const frame::MorphAttributeInputs> attributes,
                                   std::span<const float> weights, int vertexCount, std::uint64_t inputStamp,
                                   const Buffer& out, const Streams& streams) {
-    using D = detail::MeshDeformer;
+    namespace D = m3g::frame;
     const auto n = static_cast<std::size_t>(std::max(vertexCount, 0));
     if (attributes.size() != static_cast<std::size_t>(D::kMorphAttributes))
         fail("recordMorph needs one entry per morph attribute");

@@ -19,7 +19,7 @@
 
 #include "Context.h"
 #include "DeformParams.h"
-#include "MeshDeformer.h"
+#include <m3g/frame/DeformInputs.h>
 
 namespace m3g::vk {
 
@@ -33,7 +33,7 @@ struct GpuDeformState {
     bool hasInputs = false;
     /// Element offsets into `inputs` (kNoStream: absent).
     std::uint32_t bonesIn = 0, weightsIn = 0, positionsIn = 0, normalsIn = 0, tableVertices = 0;
-    std::array<std::uint32_t, detail::MeshDeformer::kMorphAttributes> valuesIn{};
+    std::array<std::uint32_t, frame::kMorphAttributes> valuesIn{};
     /// The per-dispatch data: the palette or the morph weights.
     Buffer frameData;
     std::uint64_t frameDataUsed = 0;  ///< frame number that last recorded with frameData
@@ -59,7 +59,7 @@ public:
     /// when `in` has normals. Uploads the static inputs first when
     /// `inputStamp` differs from the state's. `out` needs STORAGE_BUFFER
     /// usage. Throws VulkanError when the mesh is larger than one dispatch.
-    void recordSkin(VkCommandBuffer cmd, GpuDeformState& state, const detail::SkinInputs& in,
+    void recordSkin(VkCommandBuffer cmd, GpuDeformState& state, const frame::SkinInputs& in,
                     std::uint64_t inputStamp, const Buffer& out, const Streams& streams);
 
     /// Records morphing of every present attribute (`attributes` indexed as
@@ -67,7 +67,7 @@ public:
     /// positions and normals (renormalised) xyz, colours RGBA clamped to
     /// [0, 1], texture coordinates padded to 3 floats with zeros.
     void recordMorph(VkCommandBuffer cmd, GpuDeformState& state,
-                     std::span<const detail::MorphAttributeInputs> attributes, std::span<const float> weights,
+                     std::span<const frame::MorphAttributeInputs> attributes, std::span<const float> weights,
                      int vertexCount, std::uint64_t inputStamp, const Buffer& out, const Streams& streams);
 
     /// Compute-shader writes before vertex-attribute reads (and `dstStage` /

@@ -1,4 +1,4 @@
-// The process-wide Vulkan instance and device (architecture guide §7: one
+// The process-wide Vulkan instance and device (docs/rendering.md, docs/threading.md: one
 // device per process, shared by every Graphics3D). Functions come through
 // volk, so a missing libvulkan is a VulkanError at first use, not a failure
 // to start the program.
@@ -11,6 +11,7 @@
 #include <mutex>
 #include <span>
 #include <string>
+#include <vector>
 
 #include <volk.h>
 
@@ -65,6 +66,9 @@ public:
     static std::shared_ptr<Context> shared();
     /// True once get() has succeeded.
     static bool exists() noexcept;
+    /// Runs `f` and returns true if the device has not been created yet
+    /// (under the lock that creation takes); false otherwise.
+    static bool beforeCreation(const std::function<void()>& f);
 
     VkInstance instance() const noexcept { return instance_; }
     VkPhysicalDevice physicalDevice() const noexcept { return physical_; }
@@ -136,6 +140,8 @@ public:
 
 private:
     Context();
+    /// The logical device on physical_ with the features and extensions render-vk uses.
+    void createDevice(const std::vector<VkPhysicalDevice>& devices);
     std::uint32_t memoryType(std::uint32_t bits, VkMemoryPropertyFlags want, VkMemoryPropertyFlags fallback) const;
     /// createImage and createHostImage: the image, its memory and its view.
     Image makeImage(std::uint32_t width, std::uint32_t height, VkFormat format, VkImageUsageFlags usage,

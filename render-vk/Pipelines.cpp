@@ -11,7 +11,7 @@ namespace m3g::vk {
 
 namespace {
 
-// Spec digest §5.8: the same factors on colour and alpha.
+// JSR-184 1.1, CompositingMode: the same factors on colour and alpha.
 VkPipelineColorBlendAttachmentState blendState(std::uint8_t blend, std::uint8_t mask) {
     VkPipelineColorBlendAttachmentState b{};
     b.colorWriteMask = mask;

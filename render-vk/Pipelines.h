@@ -1,57 +1,20 @@
-// The uber program's layouts and its pipelines. A pipeline is identified by
-// a small key (guide §5: blend mode, colour write mask, sample count); all
-// other fixed-function state is uniform data or Vulkan 1.3 dynamic state.
+// The uber program's layouts and its pipelines, one per frame::PipelineKey
+// (frame/PipelineKey.h: blending, write mask, sample count, and the shader
+// features a draw uses, compiled in as specialization constants). All other
+// fixed-function state is uniform data or Vulkan 1.3 dynamic state.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <unordered_map>
 
+#include <m3g/frame/PipelineKey.h>
+
 #include "Context.h"
 
 namespace m3g::vk {
 
-struct PipelineKey {
-    std::uint8_t blend = 0;      ///< 0 REPLACE, 1 ALPHA, 2 ALPHA_ADD, 3 MODULATE, 4 MODULATE_X2
-    std::uint8_t writeMask = 0xF;  ///< VkColorComponentFlags
-    std::uint8_t samples = 1;
-    std::uint8_t wireframe = 0;  ///< 1: polygon mode LINE (DebugView)
-    // Fragment-shader features, m3g.frag's specialization constants. A
-    // feature a draw does not use is compiled out rather than skipped by a
-    // uniform branch: llvmpipe runs both sides of a branch under a lane mask,
-    // so a disabled texture unit or fog still cost their full work (measured:
-    // ~40% of the rasteriser's CPU time on scene.m3g at 1280x960).
-    /// 1: the discards stay (alpha threshold, Background BORDER). Without them
-    /// a rasteriser can also test depth before shading (llvmpipe does).
-    std::uint8_t discard = 0;
-    /// Per texture unit: its function (DrawUniforms.h TexFunc, 0 = off) and
-    /// its image's channels (bit 0 colour, bit 1 alpha).
-    std::uint8_t texFunc[2] = {0, 0};
-    std::uint8_t texFormat[2] = {0, 0};
-    /// Per texture unit, 1: the texture matrix is projective (bottom row not
-    /// 0, 0, 0, 1), so the fragment shader divides s and t by q.
-    std::uint8_t texProjective[2] = {0, 0};
-    std::uint8_t fog = 0;   ///< 1: fog applied
-    std::uint8_t flat = 0;  ///< 1: SHADE_FLAT
-    /// Bit 0 lighting, bit 1 two-sided lighting (m3g.vert, and m3g.frag's
-    /// choice of back-face colours).
-    std::uint8_t lighting = 0;
-    /// With lighting, m3g.vert's lights: how many (0..8), each one's mode
-    /// (light i in bits 2i..2i+1: 0 ambient, 1 directional, 2 omni, 3 spot)
-    /// and whether the material's specular colour is not black. A light's
-    /// mode is compiled in instead of branched on (llvmpipe ran every mode's
-    /// code for every light: the vertex stage of midpath robot.m3g).
-    std::uint8_t lightCount = 0;
-    std::uint16_t lightModes = 0;
-    std::uint8_t specular = 0;
-    std::uint64_t packed() const noexcept {
-        auto at = [](std::uint64_t v, int bit) { return v << bit; };
-        return at(blend, 0) | at(writeMask, 4) | at(samples, 8) | at(wireframe, 16) | at(discard, 17) |
-               at(texFunc[0], 18) | at(texFunc[1], 21) | at(texFormat[0], 24) | at(texFormat[1], 26) | at(fog, 28) |
-               at(flat, 29) | at(lighting, 30) | at(lightCount, 32) | at(lightModes, 36) | at(specular, 52) |
-               at(texProjective[0], 53) | at(texProjective[1], 54);
-    }
-};
+using frame::PipelineKey;
 
 /// A renderer's pipelines, created on first use and kept while they are
 /// among the `capacity` most recently used. The key space is large (blend x

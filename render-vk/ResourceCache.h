@@ -1,41 +1,37 @@
-// GPU mirrors of VertexBuffer, IndexBuffer and Image2D, kept in side tables
-// keyed by object id and refreshed when the object's revision changes
-// (architecture guide §4: scene objects never hold Vulkan handles). Mirrors
-// of dead objects and replaced mirrors are freed only after the frame that
-// may use them has finished (endFrame).
+// GPU copies of the resources a DrawList names (vertex streams, triangle
+// lists, textures), kept in side tables keyed by object id and refreshed
+// when the draw names a newer version: the data comes through
+// frame::FrameSources, never from scene objects (scene objects hold no
+// Vulkan handles either). Used only while a frame is prepared: uploads of
+// textures are recorded into the frame's upload commands (submitted with
+// the frame, before its draws), deformations on the GPU into its compute
+// commands. Replaced copies and those of released objects are freed once
+// the frame that may read them has finished (endFrame).
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <span>
 #include <unordered_map>
 #include <vector>
 
-#include <m3g/Object3D.h>
-#include <m3g/Ref.h>
+#include <m3g/frame/DrawList.h>
+#include <m3g/frame/FrameSources.h>
 
 #include "ComputeDeformer.h"
 #include "Context.h"
-#include "MeshDeformer.h"
-
-namespace m3g {
-class Image2D;
-class IndexBuffer;
-class Mesh;
-class VertexBuffer;
-}  // namespace m3g
 
 namespace m3g::vk {
 
-/// Five float streams: position (raw, or final for deformed meshes),
-/// normal, colour RGBA, texcoord 0, texcoord 1 (raw).
+/// Five float streams (frame::Stream order): position (raw, or final for
+/// deformed meshes), normal, colour RGBA, texcoord 0, texcoord 1 (raw).
 struct VertexMirror {
     Buffer buffer;
-    std::array<VkDeviceSize, 5> offsets{};
-    std::array<bool, 5> present{};
+    std::array<VkDeviceSize, frame::STREAM_COUNT> offsets{};
+    std::array<bool, frame::STREAM_COUNT> present{};
     int vertexCount = 0;
-    bool deformed = false;  ///< positions already scaled and biased
 };
 
 struct IndexMirror {
@@ -43,42 +39,37 @@ struct IndexMirror {
     std::uint32_t count = 0;
 };
 
-struct TextureMirror {
-    Image image;
-    bool hasColor = true, hasAlpha = true;
-};
-
 class ResourceCache {
 public:
     ResourceCache(Context& ctx, VkDescriptorSetLayout textureSetLayout);
     ~ResourceCache();
 
-    /// Streams of `vb`, or of `mesh`'s deformed vertices when it is a
-    /// SkinnedMesh or MorphingMesh: deformed on the CPU and uploaded, or,
-    /// with `compute`, by ComputeDeformer into the mirror (recorded into the
-    /// frame's compute commands, see finishCompute). Either way only when an
-    /// input changed. ISE on invalid vertex data.
-    const VertexMirror& vertices(VertexBuffer& vb, const Mesh* mesh, bool compute = false);
-    /// The frame's compute commands, ended with their barrier, to submit
-    /// before the draws; VK_NULL_HANDLE when the frame deformed nothing on
-    /// the GPU.
+    /// The streams of `ref`: uploaded from `sources` when the copy is older
+    /// than ref.version, or deformed by ComputeDeformer into the copy for
+    /// GPU sources (recorded into the frame's compute commands).
+    const VertexMirror& vertices(const frame::VertexRef& ref, frame::FrameSources& sources);
+    /// The triangle list of `ref`.
+    const IndexMirror& indices(const frame::IndexRef& ref, frame::FrameSources& sources);
+    /// The RGBA8 image of `ref` (with its mip chain if asked), its upload
+    /// recorded into the frame's upload commands when it is new.
+    const Image& texture(const frame::TextureRef& ref, frame::FrameSources& sources);
+    VkSampler sampler(frame::SamplerKey key);
+    /// Descriptor set of two combined image samplers; a null image = white texel.
+    VkDescriptorSet textureSet(const Image* t0, VkSampler s0, const Image* t1, VkSampler s1);
+
+    /// The frame's upload and compute commands, ended, to submit before the
+    /// draws; VK_NULL_HANDLE where the frame recorded none.
+    VkCommandBuffer finishUploads();
     VkCommandBuffer finishCompute() { return compute_ ? compute_->finishFrame() : VK_NULL_HANDLE; }
 
-    /// A triangle list with each triangle's OpenGL provoking vertex (the
-    /// strip's last) first, because Vulkan's flat shading uses the first.
-    const IndexMirror& indices(IndexBuffer& ib);
-    /// RGBA8 image of `image` (expanded per format), with a mip chain if asked.
-    const TextureMirror& texture(Image2D& image, bool mipmaps);
-    VkSampler sampler(int wrapS, int wrapT, int imageFilter, int levelFilter);
-    /// Descriptor set of two combined image samplers; null = white texel.
-    VkDescriptorSet textureSet(const TextureMirror* t0, VkSampler s0, const TextureMirror* t1, VkSampler s1);
-
+    /// The objects of `ids` no longer exist: their copies go at endFrame.
+    void release(std::span<const std::uint64_t> ids);
     /// Called when the GPU has finished all submitted work: frees replaced
-    /// mirrors and those of objects that no longer exist.
+    /// and released copies.
     void endFrame();
     /// Drops every cached texture descriptor set (the GPU must be idle).
     void forgetTextureSets();
-    /// Called when a new frame starts recording.
+    /// Called when a new frame starts.
     void beginFrame() noexcept { ++frame_; }
 
     ResourceCache(const ResourceCache&) = delete;
@@ -86,39 +77,34 @@ public:
 
 private:
     struct VertexEntry {
-        WeakRef<Object3D> owner;
-        std::array<std::uint64_t, 12> signature{};
         VertexMirror mirror;
-        std::unique_ptr<detail::MeshDeformer> deformer;
+        std::uint64_t version = 0, inputVersion = 0;
+        frame::VertexSource source = frame::VertexSource::Plain;
         std::uint64_t lastFrame = 0;
-        /// The compute path's inputs; `computed`: the mirror was last
-        /// written by it (its static streams are in place).
-        GpuDeformState gpu;
-        bool computed = false;
+        GpuDeformState gpu;  ///< the compute path's inputs
     };
     struct IndexEntry {
-        WeakRef<Object3D> owner;
         std::uint32_t revision = 0;
         IndexMirror mirror;
     };
     struct TextureEntry {
-        WeakRef<Object3D> owner;
         std::uint32_t revision = 0;
         bool mipmaps = false;
-        TextureMirror mirror;
+        Image image;
     };
 
-    void upload(VertexEntry& entry, const std::array<const std::vector<float>*, 5>& streams, int vertexCount);
     /// Lays out `present` streams of `vertexCount` vertices in the entry's
     /// buffer, replacing it when too small or already used by this frame.
     /// Returns true when the buffer is new (its contents undefined).
-    bool layoutMirror(VertexEntry& entry, const std::array<bool, 5>& present, int vertexCount);
-    void writeStream(VertexEntry& entry, int stream, const std::vector<float>& values);
+    bool layoutMirror(VertexEntry& entry, const std::array<bool, frame::STREAM_COUNT>& present, int vertexCount);
+    void writeStream(VertexEntry& entry, int stream, std::span<const float> values);
     /// The compute path of vertices().
-    void deformOnGpu(VertexEntry& entry, VertexBuffer& vb, const Mesh& mesh, bool staticsStale);
+    void deformOnGpu(VertexEntry& entry, const frame::VertexRef& ref, frame::FrameSources& sources, bool staticsStale);
     void retire(Buffer& buffer);
     void retire(Image& image);
-    TextureMirror createTexture(Image2D& image, bool mipmaps);
+    /// Creates the image and records its upload (and mip chain) into `cmd`.
+    Image createTexture(VkCommandBuffer cmd, const std::vector<std::uint8_t>& rgba, int width, int height, bool mipmaps);
+    VkCommandBuffer uploadCommands();
 
     Context& ctx_;
     VkDescriptorSetLayout setLayout_;
@@ -130,11 +116,15 @@ private:
     std::map<std::array<std::uint64_t, 4>, VkDescriptorSet> sets_;
     std::vector<VkDescriptorPool> pools_;
     std::uint32_t poolUsed_ = 0;
-    TextureMirror white_;
+    Image white_;
     std::vector<Buffer> retiredBuffers_;
     std::vector<Image> retiredImages_;
-    std::vector<float> scratch_[5];
+    std::vector<std::uint32_t> triangles_;
+    std::vector<std::uint8_t> texels_;
     std::unique_ptr<ComputeDeformer> compute_;
+    VkCommandPool uploadPool_ = VK_NULL_HANDLE;
+    VkCommandBuffer uploadCmd_ = VK_NULL_HANDLE;
+    bool uploading_ = false;
 };
 
 }  // namespace m3g::vk

@@ -2,17 +2,36 @@
 
 #include <m3g/Graphics3D.h>
 
-#include "Check.h"
+#include <mutex>
+#include <unordered_map>
+
 #include "Swapchain.h"
 
 namespace m3g::vk {
 
+namespace {
+// The live windows, by their address as a Graphics (frame::Target::identity).
+std::mutex gWindowsMutex;
+std::unordered_map<const void*, WindowTarget*> gWindows;
+}  // namespace
+
 WindowTarget::WindowTarget(SurfaceFactory createSurface, int width, int height, bool vsync)
     : Graphics(width, height), createSurface_(std::move(createSurface)), vsync_(vsync) {
     if (!createSurface_) throw NullPointerException("m3g::vk::WindowTarget: the surface factory is empty");
+    std::lock_guard lock(gWindowsMutex);
+    gWindows[static_cast<const Graphics*>(this)] = this;
 }
 
-WindowTarget::~WindowTarget() = default;
+WindowTarget::~WindowTarget() {
+    std::lock_guard lock(gWindowsMutex);
+    gWindows.erase(static_cast<const Graphics*>(this));
+}
+
+WindowTarget* WindowTarget::find(const void* identity) noexcept {
+    std::lock_guard lock(gWindowsMutex);
+    const auto it = gWindows.find(identity);
+    return it == gWindows.end() ? nullptr : it->second;
+}
 
 void WindowTarget::resize(int width, int height) {
     if (Graphics3D::getInstance()->targetGraphics() == this)

@@ -8,7 +8,7 @@
 namespace m3g {
 
 namespace {
-// Component counts a property accepts (spec digest §4.24).
+// Component counts a property accepts (JSR-184 1.1, AnimationTrack).
 bool validComponentCount(int property, int n) {
     switch (property) {
     case AnimationTrack::ALPHA:

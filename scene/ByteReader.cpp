@@ -1,4 +1,4 @@
-// Bounded little-endian reader for the .m3g primitive types (spec digest §6.1).
+// Bounded little-endian reader for the .m3g primitive types (JSR-184 1.1 file format §3).
 #include "ByteReader.h"
 
 #include <bit>

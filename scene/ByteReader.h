@@ -1,5 +1,5 @@
 // Bounded little-endian reader for the primitive types of the .m3g format
-// (spec digest §6.1). Every failure throws m3g::IOException whose message
+// (JSR-184 1.1 file format §3). Every failure throws m3g::IOException whose message
 // names the caller's context and the byte offset.
 //
 // Internal to the loader (scene/), not part of the public API.
@@ -48,7 +48,7 @@ public:
     LoadLog* log() const { return log_; }
     bool lenient() const { return log_ && log_->lenient(); }
 
-    // --- primitives (§6.1) ----------------------------------------------
+    // --- primitives (JSR-184 1.1 file format §3) ----------------------
     std::uint8_t readByte();
     std::int16_t readInt16();
     std::uint16_t readUInt16();
@@ -67,7 +67,7 @@ public:
     std::array<float, 16> readMatrix();
     /// R,G,B bytes -> 0x00RRGGBB.
     std::uint32_t readColorRGB();
-    /// R,G,B,A bytes -> 0xAARRGGBB (§6.7).
+    /// R,G,B,A bytes -> 0xAARRGGBB (ColorRGBA, JSR-184 1.1 file format §3).
     std::uint32_t readColorRGBA();
     /// UInt32: 0 = null, 1 = header, 2.. = following objects.
     std::uint32_t readObjectIndex();

@@ -1,4 +1,4 @@
-// Little-endian writer for the .m3g primitive types (spec digest §6.1).
+// Little-endian writer for the .m3g primitive types (JSR-184 1.1 file format §3).
 #include "ByteWriter.h"
 
 #include <bit>

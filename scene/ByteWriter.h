@@ -1,5 +1,5 @@
-// Little-endian writer for the primitive types of the .m3g format (spec
-// digest §6.1), the mirror of ByteReader. Used by the Saver.
+// Little-endian writer for the primitive types of the .m3g format (JSR-184
+// 1.1 file format §3), the mirror of ByteReader. Used by the Saver.
 //
 // Internal to the writer (scene/), not part of the public API.
 #pragma once
@@ -22,7 +22,7 @@ public:
     std::size_t size() const noexcept { return out_.size(); }
     void clear() noexcept { out_.clear(); }
 
-    // --- primitives (§6.1) ----------------------------------------------
+    // --- primitives (JSR-184 1.1 file format §3) ----------------------
     void writeByte(std::uint8_t v) { out_.push_back(v); }
     void writeInt16(std::int16_t v) { writeUInt16(static_cast<std::uint16_t>(v)); }
     void writeUInt16(std::uint16_t v);
@@ -40,7 +40,7 @@ public:
     void writeMatrix(const std::array<float, 16>& rows, const char* what = "Matrix");
     /// 0x??RRGGBB -> R, G, B.
     void writeColorRGB(std::uint32_t rgb);
-    /// 0xAARRGGBB -> R, G, B, A (§6.7).
+    /// 0xAARRGGBB -> R, G, B, A (ColorRGBA, JSR-184 1.1 file format §3).
     void writeColorRGBA(std::uint32_t argb);
     void writeObjectIndex(std::uint32_t index) { writeUInt32(index); }
     /// Byte[]: UInt32 count then the bytes.

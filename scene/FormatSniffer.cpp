@@ -1,4 +1,4 @@
-// Input identification by magic bytes (spec digest §7).
+// Input identification by magic bytes (JSR-184 1.1, Loader).
 #include "FormatSniffer.h"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Identifies loader input by its magic bytes (spec digest §7), so that a
+// Identifies loader input by its magic bytes (JSR-184 1.1, Loader), so that a
 // non-M3G input is named instead of failing with a generic error.
 //
 // Internal to the loader (scene/), not part of the public API.

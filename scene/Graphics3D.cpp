@@ -8,8 +8,7 @@
 #include <string>
 
 #include "Check.h"
-#include "RenderBackend.h"
-#include "RenderQueue.h"
+#include "frame/FrameState.h"
 
 namespace m3g {
 
@@ -33,7 +32,7 @@ int skinningModeFromEnvironment() {
 }  // namespace
 
 Graphics3D::Graphics3D()
-    : skinningMode_(skinningModeFromEnvironment()), queue_(std::make_unique<detail::RenderQueue>()) {}
+    : skinningMode_(skinningModeFromEnvironment()) {}
 
 void Graphics3D::setSkinningMode(int mode) {
     if (mode != SKINNING_CPU && mode != SKINNING_COMPUTE)
@@ -134,9 +133,13 @@ void Graphics3D::releaseTarget() {
             g.targetWidth_ = g.targetHeight_ = 0;
             g.depthBuffer_ = false;
             g.hints_ = 0;
+            if (g.frame_) {
+                g.frame_->imagePixels.reset();
+                g.frame_->graphicsPixels.reset();
+            }
         }
     } unbind{*this};
-    if (backend_) backend_->release(*this);
+    if (frame_ && frame_->backend) frame_->backend->release(frameTarget(), frame_->builder.sweep());
 }
 
 void Graphics3D::releaseRenderer() noexcept {
@@ -145,7 +148,7 @@ void Graphics3D::releaseRenderer() noexcept {
     } catch (...) {
         // The renderer goes anyway.
     }
-    backend_.reset();
+    if (frame_) frame_->backend.reset();
 }
 
 void Graphics3D::setViewport(int x, int y, int width, int height) {

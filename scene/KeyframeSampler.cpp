@@ -65,7 +65,7 @@ Vec3 sub(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z
 Vec3 scale(const Vec3& a, double s) { return {a.x * s, a.y * s, a.z * s}; }
 
 // Spherical interpolation along the arc from a to b as given: no sign flip
-// towards the shortest arc (Nokia behaviour, spec digest §8.3).
+// towards the shortest arc, as Nokia's M3G implementation (reference) does.
 Quat slerp(const Quat& a, const Quat& b, double u) {
     const double c = dot(a, b);
     if (c > 1.0 - 1e-9) {  // (nearly) the same rotation: normalised lerp

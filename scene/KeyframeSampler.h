@@ -1,4 +1,4 @@
-// Keyframe sampling (spec digest §5.12) on plain data, so that it can be
+// Keyframe sampling (JSR-184 1.1, KeyframeSequence) on plain data, so that it can be
 // tested without the object model. Internal to m3g_scene.
 #pragma once
 
@@ -59,7 +59,7 @@ SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<flo
 /// `time` (k.components floats into `out`) for a valid SPLINE or LINEAR
 /// view: from the segment that ends at `time` when `fromLeft`, else from the
 /// one that starts there (at a keyframe the incoming and outgoing Hermite
-/// tangents differ, spec digest §5.12). 0 where the value is held (before
+/// tangents differ, JSR-184 1.1, KeyframeSequence). 0 where the value is held (before
 /// the first / after the last key of a CONSTANT sequence, one keyframe,
 /// zero-length segments) and for the other interpolations. Used to convert
 /// SPLINE tangents (glTF export).

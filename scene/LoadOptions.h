@@ -1,4 +1,5 @@
-// Loader options and the warnings a lenient load collects (spec digest §6, §7).
+// Loader options and the warnings a lenient load collects (JSR-184 1.1 file
+// format; JSR-184 1.1, Loader).
 //
 // Internal to the loader (scene/), not part of the public API.
 #pragma once

@@ -1,4 +1,5 @@
-// javax.microedition.m3g.Loader (spec digest §4.27, §6, §7).
+// javax.microedition.m3g.Loader (JSR-184 1.1, Loader, and the JSR-184 1.1
+// file format).
 #include <m3g/Loader.h>
 
 #include <algorithm>

@@ -1,4 +1,5 @@
-// The section layer of the .m3g format (spec digest §6.2–6.4, §6.8).
+// The section layer of the .m3g format (JSR-184 1.1 file format, sections
+// "File Structure", "Header Object" and "External Reference", and §8).
 #include "M3GSections.h"
 
 #include <algorithm>

@@ -1,4 +1,5 @@
-// The section layer of the .m3g format (spec digest §6.2–6.4, §6.8): file
+// The section layer of the .m3g format (JSR-184 1.1 file format, sections
+// "File Structure", "Header Object" and "External Reference", and §8): file
 // identifier, sections (uncompressed or zlib), Adler-32 checksums, the object
 // records inside the sections, the header object and the section rules.
 // Per-class decoding of the object data is done elsewhere, on the spans
@@ -24,7 +25,8 @@ namespace m3g::detail {
 inline constexpr std::array<std::uint8_t, 12> kM3GFileIdentifier = {
     0xAB, 0x4A, 0x53, 0x52, 0x31, 0x38, 0x34, 0xBB, 0x0D, 0x0A, 0x1A, 0x0A};
 
-/// ObjectType values (§6.3).
+/// ObjectType values (JSR-184 1.1 file format: each class's ObjectType in
+/// section "Per-Class Data"; 0 the header object, 255 an external reference).
 enum M3GObjectType : std::uint8_t {
     kTypeHeader = 0,
     kTypeAnimationController = 1,
@@ -55,7 +57,7 @@ enum M3GObjectType : std::uint8_t {
 /// "Mesh", "External Reference", or "reserved" for 23..254.
 const char* objectTypeName(std::uint8_t type);
 
-/// The header object (type 0, §6.4).
+/// The header object (type 0, JSR-184 1.1 file format, section "Header Object").
 struct M3GHeader {
     std::uint8_t versionMajor = 0;
     std::uint8_t versionMinor = 0;
@@ -116,10 +118,11 @@ private:
 };
 
 /// Parses the identifier, every section (checksum, inflate) and every object
-/// record of the M3G file at data[0], applying the section rules (§6.2, §6.4,
-/// §6.8). The file ends at TotalFileSize, so trailing bytes after an
-/// embedded file are ignored. Throws IOException naming the section, object
-/// and byte offset. Warnings (lenient loads) go to `log`.
+/// record of the M3G file at data[0], applying the section rules (JSR-184 1.1
+/// file format, sections "File Structure" and "Header Object", and §8). The
+/// file ends at TotalFileSize, so trailing bytes after an embedded file are
+/// ignored. Throws IOException naming the section, object and byte offset.
+/// Warnings (lenient loads) go to `log`.
 M3GFile parseM3GFile(std::span<const std::uint8_t> data, LoadLog& log);
 
 /// "section 2, object 5 (Mesh, type 14)" — object is the ObjectIndex.

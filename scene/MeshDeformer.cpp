@@ -1,5 +1,5 @@
 // Deformation of SkinnedMesh and MorphingMesh vertices with the skin/
-// kernels, recomputed only when an input changed (architecture guide §6).
+// kernels, recomputed only when an input changed.
 //
 // Change detection compares exactly what the result is made of:
 //  - the VertexBuffers and VertexArrays read (object id and revision: a
@@ -20,6 +20,7 @@
 
 #include <m3g/MorphingMesh.h>
 #include <m3g/SkinnedMesh.h>
+#include <m3g/skin/InfluenceTable.h>
 #include <m3g/VertexArray.h>
 #include <m3g/VertexBuffer.h>
 #include <m3g/skin/Morph.h>

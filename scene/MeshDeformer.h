@@ -1,6 +1,7 @@
 // The deformed vertices of a SkinnedMesh or MorphingMesh, as float arrays,
-// for the renderer and for picking (spec digest §4.9, §5.11). Deformed data
-// never goes back into the quantised VertexArrays (architecture guide §6).
+// for the renderer and for picking (JSR-184 1.1, MorphingMesh and
+// SkinnedMesh). Deformed data never goes back into the quantised
+// VertexArrays.
 #pragma once
 
 #include <array>
@@ -11,6 +12,7 @@
 #include <m3g/Limits.h>
 #include <m3g/skin/Palette.h>
 #include <m3g/skin/Skinning.h>
+#include <m3g/frame/DeformInputs.h>
 
 #include "BoneTransforms.h"
 
@@ -41,41 +43,10 @@ struct DeformedVertices {
     std::array<int, kMaxTextureUnits> texCoordComponents{};
 };
 
-/// The kernel inputs of a SkinnedMesh as of the last update() (for a GPU
-/// that runs the same kernel: render-vk's compute path). The spans point
-/// into the deformer and the mesh's influence table; they stay valid until
-/// the next update() or a change to the mesh.
-struct SkinInputs {
-    int vertexCount = 0;
-    /// Raw xyz per vertex (zeros when the VertexBuffer has no positions).
-    /// A vertex without influence takes positionScale * p + positionBias
-    /// (the VertexBuffer's); the palette's position rows have them folded in
-    /// (PaletteJob::positionScale), so an influenced vertex takes the
-    /// blended rows times (p, 1).
-    std::span<const float> positions;
-    float positionScale = 1.0f;
-    std::array<float, 3> positionBias{0.0f, 0.0f, 0.0f};
-    /// xyz per vertex with the GL signed-normalised mapping; empty: no normals.
-    std::span<const float> normals;
-    /// The influence table (InfluenceTable's layout): `influenceStride` slots
-    /// per vertex for tableVertices = bones.size() / influenceStride vertices
-    /// (fewer or more than vertexCount); bone -1 = empty slot.
-    int influenceStride = 0;
-    std::span<const std::int32_t> bones;
-    std::span<const float> weights;
-    /// One entry per bone, as posed at the last update().
-    std::span<const skin::PaletteEntry> palette;
-};
-
-/// One attribute of a MorphingMesh as of the last update(): base and target
-/// values as floats (`components` per vertex; positions with the base's
-/// scale and bias applied, normals GL-mapped, colours RGBA in [0, 1],
-/// texture coordinates raw). components == 0: the attribute is absent.
-struct MorphAttributeInputs {
-    int components = 0;
-    std::span<const float> base;
-    std::span<const std::vector<float>> targets;
-};
+/// The kernel inputs (plain spans, shared with back ends that deform on the
+/// GPU: frame/DeformInputs.h).
+using frame::MorphAttributeInputs;
+using frame::SkinInputs;
 
 /// Per-mesh deformation state. A renderer or picker keeps one per mesh (in
 /// its own side table) and calls update() before using vertices().
@@ -98,7 +69,7 @@ public:
     /// call (always true on the first call and when `output` differs from
     /// the previous call's). Returns false and leaves vertices() empty for a
     /// plain Mesh. Throws IllegalStateException when a MorphingMesh's
-    /// targets do not have the base's set of arrays (§4.9).
+    /// targets do not have the base's set of arrays (JSR-184 1.1, MorphingMesh).
     bool update(const Mesh& mesh, Output output = Output::Vertices);
 
     const DeformedVertices& vertices() const noexcept { return out_; }
@@ -115,8 +86,10 @@ public:
 
     /// Morph attribute indices: positions, normals, colours, then one per
     /// texture unit.
-    static constexpr int kMorphPositions = 0, kMorphNormals = 1, kMorphColors = 2, kMorphTexCoords = 3;
-    static constexpr int kMorphAttributes = 3 + kMaxTextureUnits;
+    static constexpr int kMorphPositions = frame::kMorphPositions, kMorphNormals = frame::kMorphNormals,
+                         kMorphColors = frame::kMorphColors, kMorphTexCoords = frame::kMorphTexCoords;
+    static constexpr int kMorphAttributes = frame::kMorphAttributes;
+    static_assert(kMorphAttributes == 3 + kMaxTextureUnits);
     /// Attribute `index` of the last update() of a MorphingMesh
     /// (components 0 when absent or not a MorphingMesh).
     MorphAttributeInputs morphAttribute(int index) const noexcept;

@@ -1,5 +1,5 @@
-// Object3D's animation services: the track list and animate() (spec digest
-// §4.1, §5.12, §5.14).
+// Object3D's animation services: the track list and animate() (JSR-184 1.1,
+// Object3D.animate, KeyframeSequence and AnimationController).
 //
 // animate() validity interval: the number of world milliseconds from
 // worldTime during which every applied value is known not to change, i.e.

@@ -1,4 +1,5 @@
-// Per-class decoding of .m3g object records (spec digest §6.5–6.8).
+// Per-class decoding of .m3g object records (JSR-184 1.1 file format, section
+// "Per-Class Data", and §8).
 #include "ObjectDecoder.h"
 
 #include <algorithm>
@@ -53,7 +54,8 @@ constexpr std::uint64_t kMaxMutableImageBytes = 64ull << 20;
 /// nest a few dozen levels.
 constexpr int kMaxNodeDepth = 1000;
 
-// ---- inherited blocks (§6.5), read first, applied once the object exists ----
+// ---- inherited blocks (JSR-184 1.1 file format, section "Per-Class Data"),
+// read first, applied once the object exists ----
 
 struct Object3DBlock {
     std::uint32_t userID = 0;
@@ -182,7 +184,7 @@ private:
                               r.offset(), o.inflated ? str(" of the inflated data of section ", o.section) : ""));
     }
 
-    // ---- references (§6.8) ----
+    // ---- references (JSR-184 1.1 file format §8) ----
 
     Object3D* refAny(ByteReader& r, const char* what, std::size_t& pos, std::uint32_t& idx) {
         pos = r.position();
@@ -347,7 +349,7 @@ private:
         return b;
     }
 
-    // ---- per class (§6.6, §6.7) ----
+    // ---- per class (JSR-184 1.1 file format, section "Per-Class Data") ----
 
     Ref<Object3D> decode(std::uint8_t type, ByteReader& r) {
         switch (type) {
@@ -408,7 +410,8 @@ private:
 
     Ref<Object3D> appearance(ByteReader& r) {
         const Object3DBlock b = readObject3D(r);
-        const int layer = static_cast<std::int8_t>(r.readByte());  // §8.2: two's complement
+        // Two's complement, as Nokia's M3G implementation (reference) reads it.
+        const int layer = static_cast<std::int8_t>(r.readByte());
         Ref<CompositingMode> cm = ref<CompositingMode>(r, "compositingMode", "CompositingMode");
         Ref<Fog> fog = ref<Fog>(r, "fog", "Fog");
         Ref<PolygonMode> pm = ref<PolygonMode>(r, "polygonMode", "PolygonMode");
@@ -441,7 +444,9 @@ private:
         const std::int32_t cropY = r.readInt32();
         const std::int32_t cropW = r.readInt32();
         const std::int32_t cropH = r.readInt32();
-        // Spec order (§8.1): depthClearEnabled, then colorClearEnabled.
+        // File-format order (JSR-184 1.1 file format, section "Per-Class Data",
+        // Background): depthClearEnabled, then colorClearEnabled. Nokia's M3G
+        // implementation (reference) reads them the other way round.
         const bool depthClear = r.readBoolean();
         const bool colorClear = r.readBoolean();
         Ref<Background> g = make<Background>();

@@ -1,4 +1,5 @@
-// Per-class decoding of .m3g object records into objects (spec digest §6.5–6.8).
+// Per-class decoding of .m3g object records into objects (JSR-184 1.1 file
+// format, section "Per-Class Data", and §8).
 //
 // Internal to the loader (scene/), not part of the public API.
 #pragma once

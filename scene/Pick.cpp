@@ -1,5 +1,6 @@
-// Group::pick (spec digest §5.13; behaviour studied in Nokia's m3gPick3D,
-// m3gPick2D, m3gMeshRayIntersectInternal and m3gSpriteRayIntersect).
+// Group::pick (JSR-184 1.1, Group.pick and RayIntersection; behaviour studied
+// in Nokia's m3gPick3D, m3gPick2D, m3gMeshRayIntersectInternal and
+// m3gSpriteRayIntersect).
 //
 // The ray is carried into each candidate's local space by the inverse of the
 // candidate-to-group transform; that transform is affine (Node transforms

@@ -1,4 +1,5 @@
-// PNG decoding with libpng (spec digest §7, corpus REFERENCE.md colour-type mapping).
+// PNG decoding with libpng (JSR-184 1.1, Loader; the colour-type mapping is in
+// PngImage.h).
 #include "PngImage.h"
 
 #include <csetjmp>

@@ -1,5 +1,6 @@
-// PNG decoding for the Loader (spec digest §7): a PNG becomes an immutable
-// Image2D whose format follows the PNG colour type (corpus REFERENCE.md):
+// PNG decoding for the Loader (JSR-184 1.1, Loader): a PNG becomes an
+// immutable Image2D whose format follows the PNG colour type, mapped as
+// Nokia's M3G implementation (reference) maps it:
 //   grey -> LUMINANCE; grey+alpha or grey+tRNS -> LUMINANCE_ALPHA;
 //   RGB or palette -> RGB; RGB+tRNS, palette+tRNS or RGBA -> RGBA.
 // 16-bit samples are reduced to 8 bits (high byte), 1/2/4-bit grey and

@@ -1,4 +1,5 @@
-// Conversions shared by the updateProperty implementations (spec digest §5.14):
+// Conversions shared by the updateProperty implementations (JSR-184 1.1,
+// Object3D.animate and AnimationTrack):
 // animated floats to packed colors and to integers.
 #pragma once
 

@@ -1,5 +1,6 @@
-// The .m3g writer (spec digest §6): object ordering, per-class serialisation
-// (§6.5–6.7) and the section layer (§6.2, §6.4).
+// The .m3g writer of the JSR-184 1.1 file format: object ordering (file format
+// §8), per-class serialisation (section "Per-Class Data") and the section
+// layer (sections "File Structure" and "Header Object").
 #include <m3g/Saver.h>
 
 #include <algorithm>
@@ -143,7 +144,7 @@ std::uint8_t ObjectSerializer::write(const Object3D& o) {
     throw IOException(str("Saver: a ", o.getClassName(), " has no M3G file representation"));
 }
 
-// ---- inherited blocks (§6.5) -------------------------------------------
+// ---- inherited blocks (JSR-184 1.1 file format, section "Per-Class Data") ----
 
 void ObjectSerializer::object3D(const Object3D& o) {
     w.writeUInt32(static_cast<std::uint32_t>(o.getUserID()));
@@ -235,7 +236,7 @@ void ObjectSerializer::mesh(const Mesh& o) {
     }
 }
 
-// ---- per-class data (§6.6) ---------------------------------------------
+// ---- per-class data (JSR-184 1.1 file format, section "Per-Class Data") ----
 
 void ObjectSerializer::animationController(const AnimationController& o) {
     object3D(o);
@@ -279,7 +280,9 @@ void ObjectSerializer::background(const Background& o) {
     w.writeInt32(o.getCropY());
     w.writeInt32(o.getCropWidth());
     w.writeInt32(o.getCropHeight());
-    // Spec order (digest §8.1): depth clear first, then color clear.
+    // File-format order (JSR-184 1.1 file format, section "Per-Class Data",
+    // Background): depth clear first, then color clear. Nokia's M3G
+    // implementation (reference) reads them the other way round.
     w.writeBoolean(o.isDepthClearEnabled());
     w.writeBoolean(o.isColorClearEnabled());
 }
@@ -341,7 +344,9 @@ void ObjectSerializer::image2D(const Image2D& o) {
     w.writeBoolean(o.isMutable());
     w.writeUInt32(static_cast<std::uint32_t>(o.getWidth()));
     w.writeUInt32(static_cast<std::uint32_t>(o.getHeight()));
-    if (o.isMutable()) return;  // a render target: no pixel data (§6.7)
+    // A render target: no pixel data (JSR-184 1.1 file format, section
+    // "Per-Class Data", Image2D).
+    if (o.isMutable()) return;
     const std::size_t count = static_cast<std::size_t>(o.getWidth()) * static_cast<std::size_t>(o.getHeight());
     if (o.isPalettized()) {
         // At most 256 entries; the constructor ignores the rest anyway.
@@ -596,7 +601,7 @@ std::vector<const Object3D*> orderObjects(std::span<Object3D* const> roots, Obje
     return order;
 }
 
-// ---- sections (§6.2) -------------------------------------------------------
+// ---- sections (JSR-184 1.1 file format, section "File Structure") ---------
 
 void appendSection(std::vector<std::uint8_t>& file, std::span<const std::uint8_t> objects, bool compress) {
     const std::uint32_t uncompressed = checkedSize(objects.size(), "objects section");
@@ -654,7 +659,8 @@ std::vector<std::uint8_t> Saver::save(std::span<Object3D* const> roots, const Sa
     std::vector<std::uint8_t> objectSection;
     appendSection(objectSection, objects.bytes(), options.compress);
 
-    // Section 0: the header object, uncompressed (§6.4).
+    // Section 0: the header object, uncompressed (JSR-184 1.1 file format,
+    // sections "File Structure" and "Header Object").
     const std::size_t headerData = 2 + 1 + 4 + 4 + authoring.size() + 1;
     const std::size_t headerSection = 13 + 5 + headerData;
     const std::uint32_t fileSize = checkedSize(

@@ -1,5 +1,7 @@
 #include <m3g/SkinnedMesh.h>
 
+#include <m3g/skin/InfluenceTable.h>
+
 #include <algorithm>
 
 #include <m3g/Limits.h>
@@ -10,13 +12,13 @@
 namespace m3g {
 
 SkinnedMesh::SkinnedMesh(VertexBuffer* vertices, IndexBuffer* submesh, Appearance* appearance, Group* skeleton)
-    : Mesh(vertices, submesh, appearance), table_(getLimits().maxTransformsPerVertex) {
+    : Mesh(vertices, submesh, appearance), table_(std::make_unique<skin::InfluenceTable>(getLimits().maxTransformsPerVertex)) {
     attachSkeleton(skeleton);
 }
 
 SkinnedMesh::SkinnedMesh(VertexBuffer* vertices, std::span<const Ref<IndexBuffer>> submeshes,
                          std::span<const Ref<Appearance>> appearances, Group* skeleton)
-    : Mesh(vertices, submeshes, appearances), table_(getLimits().maxTransformsPerVertex) {
+    : Mesh(vertices, submeshes, appearances), table_(std::make_unique<skin::InfluenceTable>(getLimits().maxTransformsPerVertex)) {
     attachSkeleton(skeleton);
 }
 
@@ -35,7 +37,7 @@ SkinnedMesh::SkinnedMesh(const SkinnedMesh& other)
       bones_(other.bones_),
       atRest_(other.atRest_),
       boneIndex_(other.boneIndex_),
-      table_(other.table_),
+      table_(std::make_unique<skin::InfluenceTable>(*other.table_)),
       added_(other.added_) {}
 
 SkinnedMesh::~SkinnedMesh() {
@@ -110,7 +112,7 @@ void SkinnedMesh::addTransform(Node* bone, int weight, int firstVertex, int numV
         boneIndex_[bone] = index;
         bone->addBoneOwner(this);
     }
-    table_.add(index, weight, firstVertex, numVertices);
+    table_->add(index, weight, firstVertex, numVertices);
     added_.push_back({index, weight, firstVertex, numVertices});
     touch();
 }
@@ -130,7 +132,7 @@ int SkinnedMesh::getBoneVertices(Node* bone, std::span<int> indices, std::span<f
     if (index < 0) return 0;
     std::vector<int> vertices;
     std::vector<float> w;
-    const int count = table_.boneVertices(index, &vertices, &w);
+    const int count = table_->boneVertices(index, &vertices, &w);
     const auto n = static_cast<std::size_t>(count);
     if (indices.data() != nullptr) {
         if (indices.size() < n)

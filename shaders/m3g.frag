@@ -1,6 +1,7 @@
 #version 450
 // Fragment stage of the fixed-function emulation: texture environment per
-// unit (spec digest §5.7 table), fog (§5.6), alpha test (§5.8).
+// unit (the texture function table of JSR-184 1.1, Texture2D), fog (JSR-184
+// 1.1, Fog), alpha test (JSR-184 1.1, CompositingMode).
 #extension GL_GOOGLE_include_directive : require
 #include "draw_uniforms.glsl"
 

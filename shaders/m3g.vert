@@ -1,6 +1,7 @@
 #version 450
 // Vertex stage of the OpenGL ES 1.1 fixed-function emulation: transform,
-// per-vertex lighting (spec digest §5.5), texture coordinate pipeline (§5.7).
+// per-vertex lighting (JSR-184 1.1, Light and Material), texture coordinate
+// pipeline (JSR-184 1.1, Texture2D).
 #extension GL_GOOGLE_include_directive : require
 #include "draw_uniforms.glsl"
 

@@ -1,5 +1,5 @@
 #version 450
-// Morph-target blending on the GPU (spec digest §4.9): the compute path of
+// Morph-target blending on the GPU (JSR-184 1.1, MorphingMesh): the compute path of
 // render-vk (ComputeDeformer), the formula of the CPU kernel skin::MorphJob
 // (skin/src/Morph.cpp, morphScalar):
 //   out = B + sum_i w_i (T_i - B)

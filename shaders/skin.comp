@@ -1,5 +1,5 @@
 #version 450
-// Linear blend skinning on the GPU (spec digest §5.11): the compute path of
+// Linear blend skinning on the GPU (JSR-184 1.1, SkinnedMesh): the compute path of
 // render-vk (ComputeDeformer), the same formula and inputs as the CPU kernel
 // skin::SkinningJob (skin/src/Skinning.cpp, skinOne):
 //   p' = (sum_k w_k P[b_k]) * (s * p + bias)

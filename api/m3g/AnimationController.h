@@ -1,4 +1,4 @@
-// javax.microedition.m3g.AnimationController (spec digest §4.25, §5.14).
+// javax.microedition.m3g.AnimationController (JSR-184 1.1, AnimationController).
 #pragma once
 
 #include <m3g/Object3D.h>

@@ -1,4 +1,4 @@
-// javax.microedition.m3g.AnimationTrack (spec digest §4.24).
+// javax.microedition.m3g.AnimationTrack (JSR-184 1.1, AnimationTrack).
 #pragma once
 
 #include <m3g/Object3D.h>
@@ -32,7 +32,8 @@ public:
     static constexpr int VISIBILITY = 276;
 
     /// NPE if `sequence` is null; IAE if `property` is not in [256, 276] or
-    /// the sequence's component count does not fit the property (§4.24).
+    /// the sequence's component count does not fit the property
+    /// (JSR-184 1.1, AnimationTrack(KeyframeSequence, int)).
     AnimationTrack(KeyframeSequence* sequence, int property);
     ~AnimationTrack() override;
 

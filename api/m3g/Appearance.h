@@ -1,4 +1,4 @@
-// javax.microedition.m3g.Appearance (spec digest §4.12).
+// javax.microedition.m3g.Appearance (JSR-184 1.1, Appearance).
 #pragma once
 
 #include <array>

@@ -1,4 +1,4 @@
-// javax.microedition.m3g.Background (spec digest §4.17, §5.9).
+// javax.microedition.m3g.Background (JSR-184 1.1, Background).
 #pragma once
 
 #include <m3g/Object3D.h>

@@ -1,4 +1,4 @@
-// javax.microedition.m3g.Camera (spec digest §4.6).
+// javax.microedition.m3g.Camera (JSR-184 1.1, Camera).
 #pragma once
 
 #include <array>

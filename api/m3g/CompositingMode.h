@@ -1,4 +1,4 @@
-// javax.microedition.m3g.CompositingMode (spec digest §4.13, §5.8).
+// javax.microedition.m3g.CompositingMode (JSR-184 1.1, CompositingMode).
 #pragma once
 
 #include <m3g/Object3D.h>

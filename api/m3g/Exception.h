@@ -1,4 +1,4 @@
-// The Java exception family of JSR-184, under one base (spec digest §1).
+// The Java exception family of JSR-184, under one base (JSR-184 1.1, package overview).
 //
 // Messages name the class, the method and the valid range, e.g.
 // "Light::setSpotAngle: angle 95 out of range [0, 90]".

@@ -1,4 +1,4 @@
-// javax.microedition.m3g.Fog (spec digest §4.16, §5.6).
+// javax.microedition.m3g.Fog (JSR-184 1.1, Fog).
 #pragma once
 
 #include <m3g/Object3D.h>

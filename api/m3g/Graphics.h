@@ -1,5 +1,5 @@
 // A 2D drawing surface standing in for javax.microedition.lcdui.Graphics, the
-// usual Graphics3D target of a MIDlet (spec digest §4.26).
+// usual Graphics3D target of a MIDlet (JSR-184 1.1, Graphics3D.bindTarget).
 #pragma once
 
 #include <cstdint>

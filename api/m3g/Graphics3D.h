@@ -1,5 +1,5 @@
 // javax.microedition.m3g.Graphics3D: the rendering context singleton
-// (spec digest §4.26, §5.3, §5.4). State, properties and binding rules are
+// (JSR-184 1.1, Graphics3D). State, properties and binding rules are
 // implemented in scene/; clear() and render() are implemented by render-vk,
 // which records them into a Vulkan command buffer submitted at releaseTarget.
 //
@@ -34,9 +34,12 @@ class VertexBuffer;
 class World;
 
 namespace detail {
-class RenderBackend;
-struct RenderQueue;
+struct FrameState;
 }  // namespace detail
+namespace frame {
+class FrameBackend;
+struct Target;
+}  // namespace frame
 
 class Graphics3D {
 public:
@@ -55,7 +58,8 @@ public:
     /// thread. Destroy it before the program exits; destruction finishes the
     /// work of a bound target (as releaseTarget) and frees its GPU resources.
     static std::unique_ptr<Graphics3D> create();
-    /// The implementation properties (spec §4.26 keys plus "m3gRelease").
+    /// The implementation properties (the keys of JSR-184 1.1,
+    /// Graphics3D.getProperties, plus Nokia's "m3gRelease").
     static std::map<std::string, Property> getProperties();
 
     /// bindTarget(target, true, 0).
@@ -73,16 +77,17 @@ public:
     /// into the bound Image2D or Graphics, and unbinds; no-op if unbound.
     void releaseTarget();
 
-    /// Clears the viewport (within the Graphics clip) as spec §5.9: colour
+    /// Clears the viewport (within the Graphics clip) as JSR-184 1.1,
+    /// Graphics3D.clear and Background specify: colour
     /// and/or depth, then the background image. Null: colour 0x00000000 and
     /// depth far. ISE if no target; IAE if the background image's format is
     /// not the target's (RGB for Graphics and RGB Image2D, RGBA for RGBA).
     void clear(Background* background);
     /// Renders a World with its active camera, its lights and its background
-    /// (spec §5.3), then makes that camera and those lights Graphics3D's
-    /// current ones. Does not animate or align. NPE if null; ISE if no
-    /// target, no active camera, the camera is not in this World, or the
-    /// background image's format is not the target's.
+    /// (JSR-184 1.1, Graphics3D.render(World)), then makes that camera and
+    /// those lights Graphics3D's current ones. Does not animate or align.
+    /// NPE if null; ISE if no target, no active camera, the camera is not in
+    /// this World, or the background image's format is not the target's.
     void render(World* world);
     /// Renders a Mesh, Sprite3D or Group (IAE otherwise, NPE if null) with
     /// the current camera and lights; `transform` (null = identity) is the
@@ -152,6 +157,10 @@ public:
     /// Frees the renderer and its GPU resources (after finishing the work of
     /// a bound target); the next clear or render creates a new one.
     void releaseRenderer() noexcept;
+    /// Replaces the back end (after finishing the work of a bound target),
+    /// e.g. with scene's recording NullBackend in tests; null: the next clear
+    /// or render makes the installed back end (frame/FrameBackend.h).
+    void useBackend(std::unique_ptr<frame::FrameBackend> backend);
     struct LightEntry {
         Ref<Light> light;
         Transform toWorld;
@@ -173,8 +182,14 @@ public:
 
 private:
     Graphics3D();
-    /// The renderer (created by render-vk on the first clear or render).
-    detail::RenderBackend& backend();
+    /// The frame state with its back end (made on the first clear or render
+    /// by the installed factory: render-vk's renderer when it is linked).
+    detail::FrameState& frame();
+    /// The bound target as the back end sees it.
+    frame::Target frameTarget() const;
+    /// Hands a clear, or the queue collected last, to the back end.
+    void drawClear(const Background* background);
+    void drawQueue();
     void requireTarget(const char* where) const;
     void bindCommon(RefCounted* target, int width, int height, bool depthBuffer, int hints, const char* where);
 
@@ -190,8 +205,7 @@ private:
     Transform cameraToWorld_, worldToCamera_;
     std::vector<LightEntry> lights_;
     int skinningMode_ = SKINNING_CPU;
-    std::unique_ptr<detail::RenderBackend> backend_;
-    std::unique_ptr<detail::RenderQueue> queue_;
+    std::unique_ptr<detail::FrameState> frame_;
 };
 
 }  // namespace m3g

@@ -1,4 +1,4 @@
-// javax.microedition.m3g.Group (spec digest §4.4, §5.13).
+// javax.microedition.m3g.Group (JSR-184 1.1, Group).
 #pragma once
 
 #include <vector>
@@ -24,9 +24,9 @@ public:
     /// Child `index` without range check or reference count (engine use).
     Node* childAt(int index) const noexcept { return children_[static_cast<std::size_t>(index)].get(); }
 
-    /// Picks along the ray o + t d (this group's coordinates), spec digest
-    /// §5.13. Candidates are the Meshes (MorphingMesh and SkinnedMesh on their
-    /// deformed vertices) below this group, reached through nodes whose
+    /// Picks along the ray o + t d (this group's coordinates), JSR-184
+    /// 1.1, Group.pick. Candidates are the Meshes (MorphingMesh and
+    /// SkinnedMesh on their deformed vertices) below this group, reached through nodes whose
     /// picking is enabled (this group included), with getScope() & scope != 0;
     /// submeshes with a null Appearance are skipped, PolygonMode culling and
     /// winding are honoured (CULL_NONE: both sides; no PolygonMode: CULL_BACK,
@@ -41,7 +41,7 @@ public:
     bool pick(int scope, float ox, float oy, float oz, float dx, float dy, float dz, RayIntersection* ri);
     /// Picks through `camera` at (x, y) in normalised viewport coordinates
     /// ((0, 0) top left, (1, 1) bottom right; values outside are allowed),
-    /// spec digest §5.13: the ray runs from the near plane (distance 0) to the
+    /// JSR-184 1.1, Group.pick: the ray runs from the near plane (distance 0) to the
     /// far plane (distance 1) through NDC (2x - 1, 1 - 2y) and is reported in
     /// this group's coordinates. Meshes as for the ray variant; scaled
     /// Sprite3Ds (with an Appearance) are hit as their screen rectangle

@@ -1,4 +1,4 @@
-// javax.microedition.m3g.Image2D (spec digest §4.18).
+// javax.microedition.m3g.Image2D (JSR-184 1.1, Image2D).
 #pragma once
 
 #include <cstdint>
@@ -71,7 +71,8 @@ public:
     /// `out` (resized to width * height * 4):
     ///   LUMINANCE       -> L, L, L, 255
     ///   ALPHA           -> 255, 255, 255, A  (white: texture MODULATE then keeps
-    ///                      the fragment color, as the ALPHA row of §5.7 requires;
+    ///                      the fragment color, as the ALPHA row of the texture
+    ///                      function table of JSR-184 1.1, Texture2D requires;
     ///                      REPLACE needs the renderer to know the format anyway)
     ///   LUMINANCE_ALPHA -> L, L, L, A
     ///   RGB             -> R, G, B, 255

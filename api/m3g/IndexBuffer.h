@@ -1,4 +1,4 @@
-// javax.microedition.m3g.IndexBuffer (spec digest §4.22).
+// javax.microedition.m3g.IndexBuffer (JSR-184 1.1, IndexBuffer).
 #pragma once
 
 #include <span>

@@ -1,4 +1,4 @@
-// javax.microedition.m3g.KeyframeSequence (spec digest §4.23, §5.12).
+// javax.microedition.m3g.KeyframeSequence (JSR-184 1.1, KeyframeSequence).
 #pragma once
 
 #include <span>

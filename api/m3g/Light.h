@@ -1,4 +1,4 @@
-// javax.microedition.m3g.Light (spec digest §4.7).
+// javax.microedition.m3g.Light (JSR-184 1.1, Light).
 #pragma once
 
 #include <m3g/Node.h>

@@ -1,4 +1,5 @@
-// Implementation limits reported by Graphics3D::getProperties() (spec digest §4.26)
+// Implementation limits reported by Graphics3D::getProperties() (JSR-184 1.1,
+// Graphics3D.getProperties)
 // and enforced by the object model (texture units, texture size, sprite crop,
 // transforms per vertex, viewport size).
 #pragma once

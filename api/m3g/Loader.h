@@ -1,4 +1,5 @@
-// javax.microedition.m3g.Loader (spec digest §4.27, §6, §7).
+// javax.microedition.m3g.Loader (JSR-184 1.1, Loader, and the JSR-184 1.1
+// file format).
 #pragma once
 
 #include <cstdint>
@@ -45,10 +46,14 @@ struct LoadResult {
 
 /// Reads .m3g files (and PNG images) into object graphs. Static only.
 ///
-/// Decoding notes (spec digest §6–8):
+/// Decoding notes (JSR-184 1.1 file format, section "Per-Class Data", and where
+/// Nokia's M3G implementation (reference) reads a field otherwise):
 /// - Background clear flags are read in spec order: depthClearEnabled, then
-///   colorClearEnabled (§8.1; Nokia's core reads them the other way round).
-/// - Appearance.layer is a two's-complement signed byte (§8.2).
+///   colorClearEnabled (Nokia's M3G implementation (reference) reads them the
+///   other way round).
+/// - Appearance.layer is a two's-complement signed byte (the format calls it a
+///   Byte, but layers are -63..63; Nokia's M3G implementation (reference)
+///   reads it signed).
 /// - Null Appearance textures and null VertexBuffer arrays are not set (the
 ///   slot stays empty), so a null slot past the unit count is no error.
 /// - User parameters become `std::shared_ptr<const UserParameters>` in the

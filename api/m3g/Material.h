@@ -1,4 +1,5 @@
-// javax.microedition.m3g.Material (spec digest §4.15, §5.5).
+// javax.microedition.m3g.Material (JSR-184 1.1, Material; the lighting
+// equation in Light and Material).
 #pragma once
 
 #include <m3g/Object3D.h>

@@ -1,4 +1,4 @@
-// javax.microedition.m3g.Mesh (spec digest §4.8).
+// javax.microedition.m3g.Mesh (JSR-184 1.1, Mesh).
 #pragma once
 
 #include <span>

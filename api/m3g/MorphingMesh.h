@@ -1,4 +1,4 @@
-// javax.microedition.m3g.MorphingMesh (spec digest §4.9).
+// javax.microedition.m3g.MorphingMesh (JSR-184 1.1, MorphingMesh).
 #pragma once
 
 #include <span>

@@ -1,4 +1,4 @@
-// javax.microedition.m3g.Node (spec digest §4.3, §5.2).
+// javax.microedition.m3g.Node (JSR-184 1.1, Node).
 #pragma once
 
 #include <vector>
@@ -33,7 +33,8 @@ public:
     /// this node, or if zRef == yRef with zTarget == yTarget != NONE. A
     /// reference whose target is NONE is discarded.
     void setAlignment(Node* zRef, int zTarget, Node* yRef, int yTarget);
-    /// Applies the alignment of this node and all its descendants (§5.2).
+    /// Applies the alignment of this node and all its descendants
+    /// (JSR-184 1.1, Node.align).
     /// IAE if `reference` is in another scene graph; ISE if a reference is a
     /// descendant of the aligned node or in another scene graph, or if a null
     /// reference must be resolved and `reference` is null.

@@ -1,4 +1,5 @@
-// javax.microedition.m3g.Object3D: the base of every scene object (spec digest §4.1, §5.14).
+// javax.microedition.m3g.Object3D: the base of every scene object
+// (JSR-184 1.1, Object3D).
 #pragma once
 
 #include <any>
@@ -26,11 +27,12 @@ public:
 
     /// Applies the animation tracks of this object and of every object
     /// reachable from it at `worldTime`; returns the validity interval in ms
-    /// (0x7FFFFFFF = indefinitely). §4.1, §5.14.
+    /// (0x7FFFFFFF = indefinitely). JSR-184 1.1, Object3D.animate.
     int animate(int worldTime);
 
     /// A copy of this object: components are shared, node subtrees are copied,
-    /// references inside a copied subtree are remapped to the copies. §5.14.
+    /// references inside a copied subtree are remapped to the copies.
+    /// JSR-184 1.1, Object3D.duplicate.
     Ref<Object3D> duplicate() const;
 
     /// This object if its user ID matches, else the first match among the
@@ -77,10 +79,12 @@ public:
     virtual const char* getClassName() const noexcept = 0;
 
     /// True if an AnimationTrack on `property` (AnimationTrack::ALPHA...) may
-    /// be attached to this class (table in spec digest §4.24).
+    /// be attached to this class (the property table of JSR-184 1.1,
+    /// AnimationTrack).
     virtual bool isAnimatable(int property) const noexcept;
-    /// Writes an animated value with the setter semantics of §5.14 (clamping,
-    /// renormalising, thresholds). `value` holds the blended components.
+    /// Writes an animated value with the setter semantics of JSR-184 1.1,
+    /// Object3D.animate and AnimationTrack (clamping, renormalising,
+    /// thresholds). `value` holds the blended components.
     virtual void updateProperty(int property, std::span<const float> value);
 
     /// Maps objects of a duplicated subtree to their copies.

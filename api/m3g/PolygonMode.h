@@ -1,4 +1,4 @@
-// javax.microedition.m3g.PolygonMode (spec digest §4.14).
+// javax.microedition.m3g.PolygonMode (JSR-184 1.1, PolygonMode).
 #pragma once
 
 #include <m3g/Object3D.h>

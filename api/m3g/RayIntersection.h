@@ -1,4 +1,5 @@
-// javax.microedition.m3g.RayIntersection: the result of Group::pick (spec digest §4.28, §5.13).
+// javax.microedition.m3g.RayIntersection: the result of Group::pick
+// (JSR-184 1.1, RayIntersection and Group.pick).
 #pragma once
 
 #include <array>

@@ -1,4 +1,4 @@
-// Intrusive reference counting for M3G objects (architecture guide §4).
+// Intrusive reference counting for M3G objects.
 //
 // M3G objects are shared everywhere (one Appearance used by many Meshes) and a
 // Java port expects "hold a reference, never delete". Every Object3D derives

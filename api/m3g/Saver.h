@@ -1,5 +1,5 @@
-// Writes object graphs as .m3g files (spec digest §6). Not part of JSR-184:
-// the counterpart of Loader.
+// Writes object graphs as .m3g files (JSR-184 1.1 file format). Not part of
+// JSR-184: the counterpart of Loader.
 #pragma once
 
 #include <cstdint>
@@ -26,7 +26,8 @@ struct SaverOptions {
 /// references). The file has the header section and one objects section.
 /// User parameters (a `std::shared_ptr<const UserParameters>` user object)
 /// are written; any other user object is not serialisable and is skipped.
-/// Mutable Image2Ds are written as mutable, without pixels (§6.7).
+/// Mutable Image2Ds are written as mutable, without pixels (JSR-184 1.1 file
+/// format, section "Per-Class Data", Image2D).
 class Saver {
 public:
     Saver() = delete;

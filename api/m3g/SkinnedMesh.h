@@ -1,6 +1,7 @@
-// javax.microedition.m3g.SkinnedMesh (spec digest §4.10, §5.11).
+// javax.microedition.m3g.SkinnedMesh (JSR-184 1.1, SkinnedMesh).
 #pragma once
 
+#include <memory>
 #include <span>
 #include <unordered_map>
 #include <vector>
@@ -8,7 +9,10 @@
 #include <m3g/Group.h>
 #include <m3g/Mesh.h>
 #include <m3g/Transform.h>
-#include <m3g/skin/InfluenceTable.h>
+
+namespace m3g::skin {
+class InfluenceTable;
+}  // namespace m3g::skin
 
 namespace m3g {
 
@@ -57,7 +61,7 @@ public:
     void collectChildren(std::vector<Node*>& out) const override;
 
     // ---- Engine interface ----
-    const skin::InfluenceTable& influenceTable() const noexcept { return table_; }
+    const skin::InfluenceTable& influenceTable() const noexcept { return *table_; }
     /// Bones in bone-index order (index = column of the influence table).
     int boneCount() const noexcept { return static_cast<int>(bones_.size()); }
     Node* bone(int index) const noexcept { return bones_[index].get(); }
@@ -67,7 +71,8 @@ public:
     int boneIndex(const Node* node) const noexcept;
 
     /// One successful addTransform call, as made (the Saver writes these as
-    /// the transform references of the file, §6.6).
+    /// the transform references of the file: JSR-184 1.1 file format,
+    /// section "Per-Class Data", SkinnedMesh).
     struct AddedTransform {
         int bone;         ///< bone index: the node is bone(bone)
         int weight;       ///< the integer weight as passed
@@ -94,7 +99,8 @@ private:
     std::vector<Ref<Node>> bones_;            // dense bone index -> node
     std::vector<Transform> atRest_;           // dense bone index -> at-rest matrix
     std::unordered_map<const Node*, int> boneIndex_;
-    skin::InfluenceTable table_;
+    // Behind a pointer: the public headers include std and api only.
+    std::unique_ptr<skin::InfluenceTable> table_;
     std::vector<AddedTransform> added_;       // addTransform calls, in order
 };
 

@@ -1,4 +1,4 @@
-// javax.microedition.m3g.Sprite3D (spec digest §4.11, §5.10).
+// javax.microedition.m3g.Sprite3D (JSR-184 1.1, Sprite3D).
 #pragma once
 
 #include <m3g/Node.h>

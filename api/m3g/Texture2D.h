@@ -1,4 +1,4 @@
-// javax.microedition.m3g.Texture2D (spec digest §4.19, §5.7).
+// javax.microedition.m3g.Texture2D (JSR-184 1.1, Texture2D).
 #pragma once
 
 #include <m3g/Transformable.h>

@@ -1,4 +1,4 @@
-// javax.microedition.m3g.Transform: a generic 4x4 float matrix (spec digest §4.29).
+// javax.microedition.m3g.Transform: a generic 4x4 float matrix (JSR-184 1.1, Transform).
 #pragma once
 
 #include <array>

@@ -1,4 +1,4 @@
-// javax.microedition.m3g.Transformable (spec digest §4.2, §5.1).
+// javax.microedition.m3g.Transformable (JSR-184 1.1, Transformable).
 #pragma once
 
 #include <array>

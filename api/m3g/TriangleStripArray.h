@@ -1,4 +1,4 @@
-// javax.microedition.m3g.TriangleStripArray (spec digest §4.22).
+// javax.microedition.m3g.TriangleStripArray (JSR-184 1.1, TriangleStripArray).
 #pragma once
 
 #include <span>

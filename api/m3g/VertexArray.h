@@ -1,4 +1,5 @@
-// javax.microedition.m3g.VertexArray (spec digest §4.20, §4.29 transform).
+// javax.microedition.m3g.VertexArray (JSR-184 1.1, VertexArray; and
+// Transform.transform(VertexArray, float[], boolean)).
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-// javax.microedition.m3g.VertexBuffer (spec digest §4.21).
+// javax.microedition.m3g.VertexBuffer (JSR-184 1.1, VertexBuffer).
 #pragma once
 
 #include <array>

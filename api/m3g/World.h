@@ -1,4 +1,4 @@
-// javax.microedition.m3g.World (spec digest §4.5).
+// javax.microedition.m3g.World (JSR-184 1.1, World).
 #pragma once
 
 #include <m3g/Background.h>

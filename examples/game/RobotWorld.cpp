@@ -119,7 +119,8 @@ RobotWorld buildRobotWorld(float aspect) {
     noCull->setCulling(PolygonMode::CULL_NONE);
     look->setPolygonMode(noCull.get());
     w.robot = new SkinnedMesh(robotVertices().get(), robotStrips().get(), look.get(), hips.get());
-    // Rest pose = the bones' transforms now (spec §4.22); joint rings are
+    // Rest pose = the bones' transforms now (JSR-184 1.1,
+    // SkinnedMesh.addTransform); joint rings are
     // shared half and half between the two bones they join.
     w.robot->addTransform(hips.get(), 1, 0, 8);
     w.robot->addTransform(spine.get(), 1, 4, 8);

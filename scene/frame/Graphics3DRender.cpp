@@ -1,5 +1,6 @@
-// Graphics3D's clear() and render() (spec digest §4.26, §5.3): the checks,
-// the collect step (scene/RenderQueue) and the hand-over to the renderer.
+// Graphics3D's clear() and render() (JSR-184 1.1, Graphics3D): the checks,
+// the collect step (RenderQueue), frame preparation (FrameBuilder: deform,
+// translate state) and the hand-over of a plain DrawList to the back end.
 #include <cstdlib>
 
 #include <m3g/Appearance.h>
@@ -14,8 +15,8 @@
 #include <m3g/World.h>
 
 #include "Check.h"
-#include "RenderQueue.h"
-#include "Renderer.h"
+#include "FrameState.h"
+#include "NullBackend.h"
 
 namespace m3g {
 
@@ -31,9 +32,11 @@ bool backgroundMatches(const Graphics3D& g, const Background* background) {
 
 }  // namespace
 
-detail::RenderBackend& Graphics3D::backend() {
-    if (!backend_) {
-        backend_ = std::make_unique<vk::Renderer>();
+detail::FrameState& Graphics3D::frame() {
+    if (!frame_) frame_ = std::make_unique<detail::FrameState>();
+    if (!frame_->backend) {
+        const frame::BackendFactory factory = frame::backendFactory();
+        frame_->backend = factory ? factory() : std::make_unique<detail::NullBackend>();
         // Free GPU state before the driver's and the validation layer's own
         // static destructors run (they were set up before this handler).
         static const bool registered = [] {
@@ -42,7 +45,46 @@ detail::RenderBackend& Graphics3D::backend() {
         }();
         (void)registered;
     }
-    return *backend_;
+    detail::FrameState& f = *frame_;
+    if (targetImage_ && !f.imagePixels) f.imagePixels.emplace(*targetImage_);
+    if (targetGraphics_ && !f.graphicsPixels) f.graphicsPixels.emplace(*targetGraphics_);
+    return f;
+}
+
+frame::Target Graphics3D::frameTarget() const {
+    frame::Target t;
+    t.width = targetWidth_;
+    t.height = targetHeight_;
+    t.depthBuffer = depthBuffer_;
+    t.hints = hints_;
+    if (frame_ && targetImage_ && frame_->imagePixels) t.pixels = &*frame_->imagePixels;
+    if (frame_ && targetGraphics_ && frame_->graphicsPixels) t.pixels = &*frame_->graphicsPixels;
+    t.identity = targetGraphics_ ? static_cast<const void*>(targetGraphics_) : static_cast<const void*>(targetImage_);
+    return t;
+}
+
+void Graphics3D::useBackend(std::unique_ptr<frame::FrameBackend> backend) {
+    releaseTarget();
+    if (!frame_) frame_ = std::make_unique<detail::FrameState>();
+    frame_->backend = std::move(backend);
+}
+
+void Graphics3D::drawClear(const Background* background) {
+    detail::FrameState& f = frame();
+    const frame::ViewState view = detail::viewState(*this);
+    f.list.reset();
+    const frame::DrawOptions options = f.backend->options();
+    f.list.clear = detail::translateClear(background, view, targetWidth_, targetHeight_, options.vulkanClipSpace,
+                                          f.list.uniforms);
+    if (f.list.clear.hasImage) f.builder.track(*background->getImage());
+    f.backend->clear(frameTarget(), view, f.list, f.builder);
+}
+
+void Graphics3D::drawQueue() {
+    detail::FrameState& f = frame();
+    const frame::ViewState view = detail::viewState(*this);
+    f.builder.build(f.queue, view, skinningMode_ == SKINNING_COMPUTE, f.backend->options(), f.list);
+    f.backend->draw(frameTarget(), view, f.list, f.builder);
 }
 
 void Graphics3D::clear(Background* background) {
@@ -51,7 +93,7 @@ void Graphics3D::clear(Background* background) {
         throw IllegalArgumentException(detail::str("Graphics3D::clear: the background image format ",
                                                    background->getImage()->getFormat(),
                                                    " is not the target's format ", targetFormat(*this)));
-    backend().clear(*this, background);
+    drawClear(background);
 }
 
 void Graphics3D::render(World* world) {
@@ -70,20 +112,21 @@ void Graphics3D::render(World* world) {
     camera->getTransformTo(world, &cameraToWorld);
     setCamera(camera.get(), &cameraToWorld);  // ArithmeticException if singular
 
-    // The World's lights replace Graphics3D's (spec §4.26).
+    // The World's lights replace Graphics3D's (JSR-184 1.1, Graphics3D.render(World)).
     std::vector<LightEntry> found;
     detail::collectLights(*world, Transform(), found);
     lights_ = std::move(found);
 
-    detail::RenderQueue& q = *queue_;
+    detail::FrameState& f = frame();
+    detail::RenderQueue& q = f.queue;
     q.reset(*camera, getLimits().maxLights);
     for (const LightEntry& l : lights_) q.addLight(*l.light, worldToCamera_ * l.toWorld);
     // Positions relative to the World, as the camera's getTransformTo(world): the
     // World's own transformation cancels out.
     q.collectNode(*world, worldToCamera_);
     q.sort();
-    backend().clear(*this, background);
-    backend().render(*this, q);
+    drawClear(background);
+    drawQueue();
 }
 
 void Graphics3D::render(Node* node, const Transform* transform) {
@@ -94,14 +137,14 @@ void Graphics3D::render(Node* node, const Transform* transform) {
                                                    " cannot be rendered (Mesh, Sprite3D or Group only)"));
     requireTarget(where);
     if (!camera_) throw IllegalStateException(detail::str(where, ": no current camera (call setCamera first)"));
-    detail::RenderQueue& q = *queue_;
+    detail::RenderQueue& q = frame().queue;
     q.reset(*camera_, getLimits().maxLights);
     for (const LightEntry& l : lights_)
         if (l.light) q.addLight(*l.light, worldToCamera_ * l.toWorld);
     const Transform nodeToWorld = transform ? *transform : Transform();
     q.collectNode(*node, worldToCamera_ * nodeToWorld);
     q.sort();
-    backend().render(*this, q);
+    drawQueue();
 }
 
 void Graphics3D::render(VertexBuffer* vertices, IndexBuffer* triangles, Appearance* appearance,
@@ -117,14 +160,14 @@ void Graphics3D::render(VertexBuffer* vertices, IndexBuffer* triangles, Appearan
     if (triangles->maxIndex() >= vertices->getVertexCount())
         throw IllegalStateException(detail::str(where, ": index ", triangles->maxIndex(), " is out of range [0, ",
                                                 vertices->getVertexCount(), ") of the VertexBuffer"));
-    detail::RenderQueue& q = *queue_;
+    detail::RenderQueue& q = frame().queue;
     q.reset(*camera_, getLimits().maxLights);
     if ((scope & camera_->getScope()) == 0) return;
     for (const LightEntry& l : lights_)
         if (l.light) q.addLight(*l.light, worldToCamera_ * l.toWorld);
     const Transform modelToWorld = transform ? *transform : Transform();
     q.addSubmesh(vertices, triangles, appearance, worldToCamera_ * modelToWorld, scope);
-    backend().render(*this, q);
+    drawQueue();
 }
 
 }  // namespace m3g

@@ -45,7 +45,7 @@ void RenderQueue::addLight(const Light& light, const Transform& lightToEye) {
                intensity * static_cast<float>((rgb >> 8) & 0xFF) / 255.0f,
                intensity * static_cast<float>(rgb & 0xFF) / 255.0f};
     const auto origin = apply(lightToEye, 0, 0, 0, 1);
-    auto dir = apply(lightToEye, 0, 0, -1, 0);  // the light shines along its -Z (spec §5.3)
+    auto dir = apply(lightToEye, 0, 0, -1, 0);  // the light shines along its -Z (JSR-184 1.1, Light)
     const float len = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
     if (len > 0.0f)
         for (int i = 0; i < 3; ++i) dir[i] /= len;
@@ -91,14 +91,19 @@ void RenderQueue::collectNode(const Node& node, const Transform& nodeToEye, floa
             item.appearance = app;
             item.modelView = nodeToEye;
             item.alphaFactor = alpha;
-            const int layer = app->getLayer() + 64;
-            item.sortKey = (static_cast<std::uint64_t>(layer) << 40) | (static_cast<std::uint64_t>(isBlended(app)) << 32) |
-                           order_++;
+            item.sortKey = nextSortKey(*app);
             items.push_back(item);
         }
     }
     // Children (Group) and a SkinnedMesh's skeleton render as part of the subtree.
     forEachChild(node, [&](Node& child) { collectNode(child, nodeToEye * child.compositeTransform(), alpha); });
+}
+
+std::uint64_t RenderQueue::nextSortKey(const Appearance& app) {
+    // Layer (-63..63, offset to stay positive), then blended after opaque,
+    // then the order of collection.
+    const auto layer = static_cast<std::uint64_t>(app.getLayer() + 64);
+    return (layer << 40) | (static_cast<std::uint64_t>(isBlended(&app)) << 32) | order_++;
 }
 
 void RenderQueue::selectLights(RenderItem& item, int scope) const {
@@ -122,8 +127,7 @@ void RenderQueue::addSubmesh(VertexBuffer* vb, IndexBuffer* ib, Appearance* app,
     item.alphaFactor = alphaFactor;
     if (lights.size() > 255) lights.resize(255);
     selectLights(item, scope);
-    const int layer = app->getLayer() + 64;
-    item.sortKey = (static_cast<std::uint64_t>(layer) << 40) | (static_cast<std::uint64_t>(isBlended(app)) << 32) | order_++;
+    item.sortKey = nextSortKey(*app);
     items.push_back(item);
 }
 

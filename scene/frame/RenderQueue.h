@@ -1,6 +1,6 @@
-// The collect step (architecture guide §1): from a World, a node or an
+// The collect step (docs/architecture.md): from a World, a node or an
 // immediate-mode submesh to a sorted list of draws, as plain data with no
-// Vulkan in it. Spec digest §5.3 (traversal, scope, lights, order).
+// Vulkan in it. JSR-184 1.1, Graphics3D.render and Node (traversal, scope, lights, order).
 #pragma once
 
 #include <array>
@@ -28,7 +28,7 @@ namespace m3g::detail {
 template <class F>
 void forEachChild(const Node& node, F&& f);
 
-/// A light in eye space, ready for the shader (spec §5.5).
+/// A light in eye space, ready for the shader (JSR-184 1.1, Light).
 struct RenderLight {
     int mode = 0;                          ///< Light::AMBIENT ... SPOT
     std::array<float, 3> color{};          ///< intensity x colour
@@ -42,7 +42,7 @@ struct RenderLight {
 
 /// Appends every Light under `root` whose path from `root` is
 /// rendering-enabled, with its light-to-world transform (`rootToWorld`
-/// includes root's own transform). Spec §5.3: render(World)'s lights.
+/// includes root's own transform). JSR-184 1.1, Graphics3D.render(World): its lights.
 void collectLights(const Node& root, const Transform& rootToWorld, std::vector<Graphics3D::LightEntry>& out);
 
 struct RenderItem {
@@ -54,7 +54,7 @@ struct RenderItem {
     Appearance* appearance = nullptr;
     int submesh = 0;
     Transform modelView;         ///< node -> eye
-    float alphaFactor = 1.0f;    ///< product over the path (spec §4.3)
+    float alphaFactor = 1.0f;    ///< product over the path (JSR-184 1.1, Node.setAlphaFactor)
     std::array<std::uint8_t, 8> lights{};  ///< indices into RenderQueue::lights
     int lightCount = 0;
     std::uint64_t sortKey = 0;   ///< layer, then opaque before blended, then order
@@ -78,11 +78,14 @@ struct RenderQueue {
     void addSubmesh(VertexBuffer* vb, IndexBuffer* ib, Appearance* app, const Transform& modelView, int scope,
                     const Node* node = nullptr, int submesh = 0, float alphaFactor = 1.0f);
     /// Orders items: layer ascending, then opaque before blended, then
-    /// collection order (stable). Spec §5.3.
+    /// collection order (stable): JSR-184 1.1, Graphics3D.render orders by
+    /// layer; opaque before blended as Nokia's M3G implementation draws.
     void sort();
 
 private:
     void selectLights(RenderItem& item, int scope) const;
+    /// The sort key of the next item drawn with `app`.
+    std::uint64_t nextSortKey(const Appearance& app);
     std::uint32_t order_ = 0;
 };
 

@@ -1,4 +1,4 @@
-// The screen geometry of a Sprite3D (spec digest §4.11, §5.10; Nokia's
+// The screen geometry of a Sprite3D (JSR-184 1.1, Sprite3D; Nokia's
 // m3gGetSpriteCoordinates), shared by the renderer (to draw sprites) and by
 // Group::pick (to hit scaled sprites).
 #pragma once

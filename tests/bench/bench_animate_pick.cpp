@@ -1,4 +1,4 @@
-// animate() and Group::pick throughput (issue 6). Figures to report, never
+// animate() and Group::pick throughput. Figures to report, never
 // pass/fail tests.
 //   BM_AnimateCorpus       animate() of the largest animated corpus file
 //   BM_AnimateSynthetic    a World of 1,000 animated groups (translation +

@@ -1,5 +1,5 @@
-// CPU cost of recording draws (the renderer issue's "recording per draw"
-// figure). Figures to report, never pass/fail tests.
+// CPU cost of recording draws (the "recording per draw" figure in
+// docs/rendering.md, "Measuring"). Figures to report, never pass/fail tests.
 //   BM_RecordWorld/N      render(World) of N meshes (one shared cube, four
 //                         Appearances, a light, a camera), the calling
 //                         thread's CPU time per call and per draw

@@ -77,7 +77,7 @@ inline void checkLoaderOnce(std::span<const std::uint8_t> bytes) {
 
 /// PNG target, one form of the input: a load through the Loader gives an
 /// IOException or one immutable Image2D within the decoder's limits whose
-/// pixel store matches its size and format (spec digest §7).
+/// pixel store matches its size and format (JSR-184 1.1, Loader).
 inline void checkPngOnce(std::span<const std::uint8_t> bytes) {
     if (bytes.empty()) return;
     try {

@@ -37,9 +37,10 @@ inline constexpr std::uint8_t kM3GIdentifier[12] = {0xAB, 0x4A, 0x53, 0x52, 0x31
                                                     0x34, 0xBB, 0x0D, 0x0A, 0x1A, 0x0A};
 inline constexpr std::uint8_t kPngSignature[8] = {0x89, 0x50, 0x4E, 0x47, 0x0D, 0x0A, 0x1A, 0x0A};
 
-/// .m3g (spec digest §6.2-6.3): identifier, then sections of CompressionScheme
-/// (1), TotalSectionLength (4), UncompressedLength (4), Objects, Checksum (4,
-/// Adler-32 of everything before it in the section). Stops at the first
+/// .m3g (JSR-184 1.1 file format, section "File Structure"): identifier,
+/// then sections of CompressionScheme (1), TotalSectionLength (4),
+/// UncompressedLength (4), Objects, Checksum (4, Adler-32 of everything
+/// before it in the section). Stops at the first
 /// section that does not fit. TotalFileSize (header object of an
 /// uncompressed first section, file offset 29) becomes the input size.
 inline Bytes repairM3G(Bytes b) {

@@ -166,7 +166,8 @@ inline bool renderPass(std::span<const std::uint8_t> bytes, m3g::Graphics& surfa
         }
         M3G_FUZZ_OTHER_EXCEPTIONS_FAIL("prepareScene")
         drawAndPick(scene, loaded, surface);
-        // Graphics3D keeps the last World's camera and lights (spec §4.26).
+        // Graphics3D keeps the last World's camera and lights (JSR-184 1.1,
+        // Graphics3D.render(World)).
         Graphics3D* g = Graphics3D::getInstance();
         g->setCamera(nullptr, nullptr);
         g->resetLights();

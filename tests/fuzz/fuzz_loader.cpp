@@ -1,4 +1,4 @@
-// libFuzzer target (issue 8, "Fuzzing"): Loader::load(bytes) on .m3g bytes.
+// libFuzzer target (docs/reliability.md, "Fuzz targets"): Loader::load(bytes) on .m3g bytes.
 // The rules are m3gfuzz::checkLoader in FuzzChecks.h; scripts/fuzz runs it.
 #include "FuzzMain.h"
 

@@ -1,4 +1,5 @@
-// libFuzzer target (issue 8, "Fuzzing"): a PNG loaded as Image2D through the Loader.
+// libFuzzer target (docs/reliability.md, "Fuzz targets"): a PNG loaded as
+// Image2D through the Loader.
 // The rules are m3gfuzz::checkPng in FuzzChecks.h; scripts/fuzz runs it.
 #include "FuzzMain.h"
 

@@ -1,4 +1,5 @@
-// libFuzzer target (issue 8, "Fuzzing"): the writer round trip, load -> save -> load.
+// libFuzzer target (docs/reliability.md, "Fuzz targets"): the writer round
+// trip, load -> save -> load.
 // The rules are m3gfuzz::checkRoundTrip in FuzzChecks.h; scripts/fuzz runs it.
 #include "FuzzMain.h"
 

@@ -2,7 +2,8 @@
  * (Vulkan 1.3, a graphics+compute queue, dynamicRendering and
  * synchronization2, every format usable) but whose vkCreateDevice fails with
  * VK_ERROR_INITIALIZATION_FAILED: the "driver that fails device creation"
- * of issue 8, as a GPU whose kernel driver is gone would behave.
+ * case of the no-Vulkan tests, as a GPU whose kernel driver is gone would
+ * behave.
  *
  * The loader-driver interface (Khronos LoaderDriverInterface.md, vk_icd.h):
  * the loader negotiates the interface version through

@@ -1,5 +1,5 @@
 // Proof that the sanitizer build checks what scripts/test says it checks
-// (issue 8, "Sanitizers in CI"): `leak` loses a heap block, which
+// (docs/reliability.md, "Sanitizer stage of scripts/test"): `leak` loses a heap block, which
 // LeakSanitizer must report at exit; `overflow` overflows a signed int, at
 // which UndefinedBehaviorSanitizer must stop the program; `race` has two
 // threads write one int unsynchronised, which ThreadSanitizer must report

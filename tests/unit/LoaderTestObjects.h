@@ -1,4 +1,5 @@
-// Hand-made object records for the Loader tests (spec digest §6.5–6.7):
+// Hand-made object records for the Loader tests (JSR-184 1.1
+// file format, section "Per-Class Data"):
 // inherited blocks and per-class data written field by field. Test-only.
 #pragma once
 

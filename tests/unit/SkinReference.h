@@ -1,5 +1,5 @@
 // Double-precision skinning reference for the tests, derived from the spec
-// text (digest §5.11) independently of skin/: per vertex, the addTransform
+// text (JSR-184 1.1, SkinnedMesh) independently of skin/: per vertex, the addTransform
 // records' weights are summed per bone, the N largest kept (ties: the bone
 // added first), normalised; positions go through (bone -> mesh) x (at rest),
 // normals through its inverse transpose (Gauss-Jordan, not cofactors) and

@@ -1,4 +1,4 @@
-// animate() must not allocate once warmed up (issue 6): the global
+// animate() must not allocate once warmed up: the global
 // allocation functions are replaced here by counting ones (for the whole
 // test program; they only count) and repeated animate() calls on a scene with
 // every kind of animated object are checked to allocate nothing.

@@ -1,4 +1,4 @@
-// AnimationController (spec digest §4.25): interval, speed re-basing,
+// AnimationController (JSR-184 1.1, AnimationController): interval, speed re-basing,
 // position mapping, weight.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// AnimationTrack (spec digest §4.24): construction checks, component counts,
+// AnimationTrack (JSR-184 1.1, AnimationTrack): construction checks, component counts,
 // controller, references, duplication.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Appearance (spec digest §4.12, §5.14).
+// Appearance (JSR-184 1.1, Appearance; Object3D.duplicate).
 #include <gtest/gtest.h>
 
 #include <vector>

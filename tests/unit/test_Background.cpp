@@ -1,4 +1,5 @@
-// Background (spec digest §3, §4.17, §4.24, §5.14).
+// Background (JSR-184 1.1, Background; its animatable properties per
+// AnimationTrack; Object3D.duplicate and animate).
 #include <gtest/gtest.h>
 
 #include <vector>

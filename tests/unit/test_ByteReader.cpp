@@ -1,4 +1,4 @@
-// ByteReader: the .m3g primitive types (spec digest §6.1), bounds and messages.
+// ByteReader: the .m3g primitive types (JSR-184 1.1 file format §3), bounds and messages.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Camera (spec digest §4.6): projections, checks, animation clamping.
+// Camera (JSR-184 1.1, Camera): projections, checks, animation clamping.
 #include <gtest/gtest.h>
 
 #include <cmath>

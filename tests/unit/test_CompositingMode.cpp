@@ -1,4 +1,4 @@
-// CompositingMode (spec digest §3, §4.13).
+// CompositingMode (JSR-184 1.1, CompositingMode).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,5 @@
-// Fog (spec digest §3, §4.16, §4.24, §5.14).
+// Fog (JSR-184 1.1, Fog; its animatable properties per AnimationTrack;
+// Object3D.duplicate and animate).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// FormatSniffer: naming the input by its magic bytes (spec digest §7).
+// FormatSniffer: naming the input by its magic bytes (JSR-184 1.1, Loader).
 #include <gtest/gtest.h>
 
 #include <filesystem>

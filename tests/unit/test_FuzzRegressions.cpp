@@ -18,6 +18,8 @@ namespace {
 template <class Check>
 void replay(const std::string& target, Check check) {
     const auto files = m3gtest::regressionFiles(target);
+    // A missing or empty folder would make the replay pass without checking anything.
+    ASSERT_FALSE(files.empty()) << "tests/fuzz/regressions/" << target << " holds no reproducer";
     for (const auto& f : files) {
         SCOPED_TRACE(f.string());
         const m3gtest::Bytes bytes = m3gtest::readFile(f);

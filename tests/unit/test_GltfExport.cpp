@@ -191,7 +191,7 @@ TEST(GltfAnimation, LoopingSequenceIsRepeatedOverTheClip) {
 
 TEST(GltfAnimation, SplineTangentsBecomeValuePerSecond) {
     // Keys (0 ms, 0) (1000 ms, 10) (3000 ms, 40), CONSTANT. M3G tangents at
-    // key 1 (spec digest §5.12): central difference (40 - 0) / 2 = 20 scaled
+    // key 1 (JSR-184 1.1, KeyframeSequence: SPLINE): central difference (40 - 0) / 2 = 20 scaled
     // by F- = 2 * 1000 / 3000 (in) and F+ = 2 * 2000 / 3000 (out): 13.33 over
     // the 1 s segment and 26.67 over the 2 s segment, both 40/3 per second.
     // The end keys of a CONSTANT sequence have zero tangents.

@@ -1,4 +1,5 @@
-// Graphics3D state, properties and target binding rules (spec digest §4.26, §9).
+// Graphics3D state, properties and target binding rules (JSR-184 1.1,
+// Graphics3D, including the getters and properties new in 1.1).
 #include <gtest/gtest.h>
 
 #include <cstdlib>

@@ -1,4 +1,4 @@
-// Image2D (spec digest §4.18): constructors, palette resolution, set(),
+// Image2D (JSR-184 1.1, Image2D): constructors, palette resolution, set(),
 // RGBA8 expansion, exceptions. Expected pixels are computed by hand.
 #include <gtest/gtest.h>
 

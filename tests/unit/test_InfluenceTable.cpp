@@ -1,4 +1,5 @@
-// skin::InfluenceTable: per-vertex top-N bone influences (spec digest §5.11).
+// skin::InfluenceTable: per-vertex top-N bone influences (JSR-184 1.1,
+// SkinnedMesh.addTransform).
 // Every expected weight below is computed by hand from the integer weights.
 #include <gtest/gtest.h>
 

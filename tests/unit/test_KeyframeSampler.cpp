@@ -1,4 +1,4 @@
-// Keyframe sampling (spec digest §5.12), every interpolation and repeat mode
+// Keyframe sampling (JSR-184 1.1, KeyframeSequence), every interpolation and repeat mode
 // at hand-computed points.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// KeyframeSequence (spec digest §4.23): construction, keyframes, ranges,
+// KeyframeSequence (JSR-184 1.1, KeyframeSequence): construction, keyframes, ranges,
 // duration, repeat mode, lazy validation.
 #include <gtest/gtest.h>
 

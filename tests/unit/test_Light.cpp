@@ -1,4 +1,4 @@
-// Light (spec digest §4.7): defaults, checks, animation clamping.
+// Light (JSR-184 1.1, Light): defaults, checks, animation clamping.
 #include <gtest/gtest.h>
 
 #include <limits>

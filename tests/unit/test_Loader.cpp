@@ -1,5 +1,6 @@
 // Loader over hand-made files: every object type and encoding, loaded values
-// checked field by field against what was written (spec digest §6.5–6.8, §7).
+// checked field by field against what was written (JSR-184 1.1 file format,
+// section "Per-Class Data", and §8; JSR-184 1.1, Loader).
 #include <gtest/gtest.h>
 
 #include <any>

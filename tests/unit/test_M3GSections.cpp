@@ -1,5 +1,6 @@
 // M3GSections: identifier, sections, checksums, zlib, object records, header
-// and section rules (spec digest §6.2–6.4, §6.8); robustness against
+// and section rules (JSR-184 1.1 file format, sections "File Structure",
+// "Header Object" and "External Reference", and §8); robustness against
 // truncated and corrupted input; the shared corpus.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,5 @@
-// Material (spec digest §3, §4.15, §4.24, §5.14).
+// Material (JSR-184 1.1, Material; its animatable properties per
+// AnimationTrack; Object3D.duplicate and animate).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Mesh (spec digest §4.8). Appearance objects are not constructed here (their
+// Mesh (JSR-184 1.1, Mesh). Appearance objects are not constructed here (their
 // implementation lives elsewhere); null appearances exercise the same paths.
 #include <gtest/gtest.h>
 

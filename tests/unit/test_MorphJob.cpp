@@ -1,4 +1,4 @@
-// skin::MorphJob: B + sum_i w_i (T_i - B) (spec digest §4.9). Validity,
+// skin::MorphJob: B + sum_i w_i (T_i - B) (JSR-184 1.1, MorphingMesh). Validity,
 // hand-computed results on every ISA path, agreement with a double-precision
 // evaluation on random data, and split/thread independence.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// MorphingMesh (spec digest §4.9).
+// MorphingMesh (JSR-184 1.1, MorphingMesh).
 #include <gtest/gtest.h>
 
 #include <vector>

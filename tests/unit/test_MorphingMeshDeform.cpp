@@ -1,5 +1,5 @@
 // MorphingMesh deformation end to end: MorphingMesh + MeshDeformer with the
-// skin/ morph kernel (spec digest §4.9). Expected values by hand.
+// skin/ morph kernel (JSR-184 1.1, MorphingMesh). Expected values by hand.
 #include <gtest/gtest.h>
 
 #include <array>

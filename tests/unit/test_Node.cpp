@@ -1,4 +1,5 @@
-// Transformable, Node and Group semantics (spec digest §4.2-4.5, §5.1, §5.2).
+// Transformable, Node and Group semantics (JSR-184 1.1, Transformable, Node,
+// Group and World; Node.align).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -108,7 +109,7 @@ TEST(Transformable, CompositeIsTRSM) {
     expectPoint(c, {1, 0, 0}, {9, 2, 0});
 }
 
-// The composite T R S M (spec digest: Transformable) against the same
+// The composite T R S M (JSR-184 1.1, Transformable) against the same
 // product built with the public Transform API, for random parts; and an
 // affine M on a Node, where the product's bottom row is M's.
 TEST(Transformable, CompositeIsTranslationRotationScaleThenM) {
@@ -386,7 +387,7 @@ TEST(World, ActiveCameraAndBackgroundDefaults) {
     EXPECT_EQ(w->getBackground(), nullptr);
 }
 
-// ---- Alignment, every case of spec digest §5.2 (hand-computed axes) ----
+// ---- Alignment, every case of JSR-184 1.1, Node.align (hand-computed axes) ----
 
 namespace {
 

@@ -1,4 +1,4 @@
-// Object3D services (spec digest §4.1, §5.14): user ID/object, find,
+// Object3D services (JSR-184 1.1, Object3D): user ID/object, find,
 // getReferences and duplicate, on the node classes of the core.
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-// Object3D animation services (spec digest §4.1, §5.14): the track list and
-// animate() on Node, Group, Camera and Light.
+// Object3D animation services (JSR-184 1.1, Object3D.animate): the track list
+// and animate() on Node, Group, Camera and Light.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -409,7 +409,7 @@ TEST(Object3DAnimation, DuplicateSharesTracks) {
     EXPECT_EQ(translation(*d)[1], 2.0f);
 }
 
-// ---- Issue 6 audit: controller timing, blending, every animatable property ----
+// ---- Audit: controller timing, blending, every animatable property ----
 
 namespace {
 
@@ -530,7 +530,8 @@ TEST(Object3DAnimation, BlendedOrientationsAreRenormalised) {
 }
 
 TEST(Object3DAnimation, EveryAnimatablePropertyThroughAWorld) {
-    // Every property of spec digest §4.1-4.25 on its class, reached from a
+    // Every animatable property of JSR-184 1.1 (AnimationTrack's property
+    // table) on its class, reached from a
     // World through children, the background, appearances and vertex
     // buffers; LINEAR ramps sampled halfway (animate(50)). Colors (0.2, 0.4,
     // 0.6) pack to 0x336699; alpha 0.4 to 0x66, 0.2 to 0x33.

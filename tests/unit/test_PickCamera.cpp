@@ -1,4 +1,4 @@
-// Group::pick through a camera (spec digest §5.13): the near-to-far ray,
+// Group::pick through a camera (JSR-184 1.1, Group.pick): the near-to-far ray,
 // distances, and scaled Sprite3Ds. Expectations worked out by hand.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Group::pick with an explicit ray (spec digest §5.13). Every expectation is
+// Group::pick with an explicit ray (JSR-184 1.1, Group.pick). Every expectation is
 // worked out by hand from the geometry in the comments.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// PolygonMode (spec digest §3, §4.14).
+// PolygonMode (JSR-184 1.1, PolygonMode).
 #include <gtest/gtest.h>
 
 #include <m3g/AnimationTrack.h>

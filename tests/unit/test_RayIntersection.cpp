@@ -1,4 +1,4 @@
-// RayIntersection defaults and argument checks (spec digest §4.28) and the
+// RayIntersection defaults and argument checks (JSR-184 1.1, RayIntersection) and the
 // Graphics target stand-in.
 #include <gtest/gtest.h>
 

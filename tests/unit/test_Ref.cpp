@@ -1,4 +1,4 @@
-// Ref / WeakRef ownership rules (architecture guide §4).
+// Ref / WeakRef ownership rules (api/m3g/Ref.h).
 #include <gtest/gtest.h>
 
 #include <m3g/Group.h>

@@ -1,6 +1,7 @@
-// Saver: the .m3g writer (spec digest §6). Files are read back with the
+// Saver: the .m3g writer (JSR-184 1.1 file format). Files are read back with the
 // loader's byte layer (parseM3GFile, ByteReader) and a test-side walker that
-// decodes every field of every object type (§6.5–6.7) and collects the
+// decodes every field of every object type (JSR-184 1.1 file format, section
+// "Per-Class Data") and collects the
 // ObjectIndex values. Also tests the graph comparer of RoundTrip.h.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// skin::PaletteJob: the per-frame bone palette (spec digest §5.11). Every
+// skin::PaletteJob: the per-frame bone palette (JSR-184 1.1, SkinnedMesh). Every
 // expected matrix is worked out by hand in the comments.
 #include <gtest/gtest.h>
 

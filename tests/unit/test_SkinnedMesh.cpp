@@ -1,4 +1,4 @@
-// SkinnedMesh (spec digest §4.10, §5.11) and the bone rule of Group::removeChild.
+// SkinnedMesh (JSR-184 1.1, SkinnedMesh) and the bone rule of Group::removeChild.
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -6,6 +6,7 @@
 #include <m3g/Group.h>
 #include <m3g/Limits.h>
 #include <m3g/SkinnedMesh.h>
+#include <m3g/skin/InfluenceTable.h>
 #include <m3g/TriangleStripArray.h>
 #include <m3g/World.h>
 

@@ -1,7 +1,8 @@
 // SkinnedMesh deformation end to end: SkinnedMesh + MeshDeformer with the
-// skin/ kernels (spec digest §4.10, §5.11, §8.9). Expected values are worked
-// out by hand in the comments; a random rig is checked against the
-// double-precision reference and the founding paper's baseline.
+// skin/ kernels (JSR-184 1.1, SkinnedMesh; a vertex without bones stays in
+// mesh space, as Nokia's M3G implementation (reference) leaves it). Expected
+// values are worked out by hand in the comments; a random rig is checked
+// against the double-precision reference and the founding paper's baseline.
 #include <gtest/gtest.h>
 
 #include <array>

@@ -1,5 +1,5 @@
 // skin::SkinningJob, skin::InfluencePartition and skin::ThreadPool
-// (spec digest §5.11). Three parts, as in ozz-animation's job tests:
+// (JSR-184 1.1, SkinnedMesh). Three parts, as in ozz-animation's job tests:
 // validity, exact hand-computed results (every ISA path forced), and
 // agreement of every path with a double-precision reference and with the
 // founding paper's baseline on random meshes. (The benchmark is

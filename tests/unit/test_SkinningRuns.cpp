@@ -1,7 +1,7 @@
 // Shared-influence runs (skin::InfluenceRun): how InfluencePartition finds
 // them, what SkinningJob::validate accepts, and that skinning a mesh as runs
 // gives what the vertex-list path and the double reference give, on every
-// ISA, at any stride, chunking and thread count (spec digest §5.11; the
+// ISA, at any stride, chunking and thread count (JSR-184 1.1, SkinnedMesh; the
 // founding paper's bookkeeping done when addTransform is called).
 #include <gtest/gtest.h>
 

@@ -1,4 +1,5 @@
-// Every constant of spec digest §3, through the umbrella header. These values
+// Every constant of JSR-184 1.1 (the static final int fields of each class),
+// through the umbrella header. These values
 // are also the enum bytes of the .m3g file format: a wrong one breaks files.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,5 @@
-// Sprite3D (spec digest §4.11, §4.24, §5.14).
+// Sprite3D (JSR-184 1.1, Sprite3D; its animatable properties per
+// AnimationTrack; Object3D.duplicate and animate).
 #include <gtest/gtest.h>
 
 #include <array>

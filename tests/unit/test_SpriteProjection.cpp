@@ -1,4 +1,4 @@
-// detail::projectSprite (spec digest §5.10): the screen rectangle, depth and
+// detail::projectSprite (JSR-184 1.1, Sprite3D): the screen rectangle, depth and
 // image coordinates of a Sprite3D, against hand-computed values.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,5 @@
-// Texture2D (spec digest §3, §4.19, §4.24, §5.14).
+// Texture2D (JSR-184 1.1, Texture2D; its animatable properties per
+// AnimationTrack; Object3D.duplicate and animate).
 #include <gtest/gtest.h>
 
 #include <array>

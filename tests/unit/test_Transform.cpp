@@ -1,4 +1,4 @@
-// Transform (spec digest §4.29): row-major layout, products and exceptions,
+// Transform (JSR-184 1.1, Transform): row-major layout, products and exceptions,
 // against hand-computed matrices.
 #include <gtest/gtest.h>
 

@@ -1,5 +1,6 @@
-// IndexBuffer / TriangleStripArray (spec digest §4.22). Expected triangle
-// lists are written out by hand from the strip rule: triangle j of a strip is
+// IndexBuffer / TriangleStripArray (JSR-184 1.1, IndexBuffer and
+// TriangleStripArray). Expected triangle lists are written out by hand from
+// the strip rule: triangle j of a strip is
 // (s[j], s[j+1], s[j+2]) for even j and (s[j], s[j+2], s[j+1]) for odd j.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,5 @@
-// VertexArray (spec digest §4.20) and Transform::transform(VertexArray) (§4.29).
+// VertexArray (JSR-184 1.1, VertexArray) and Transform::transform(VertexArray)
+// (JSR-184 1.1, Transform.transform(VertexArray, float[], boolean)).
 #include <gtest/gtest.h>
 
 #include <cstdint>

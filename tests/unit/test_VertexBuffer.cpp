@@ -1,4 +1,4 @@
-// VertexBuffer (spec digest §4.21).
+// VertexBuffer (JSR-184 1.1, VertexBuffer).
 #include <gtest/gtest.h>
 
 #include <vector>

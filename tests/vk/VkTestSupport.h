@@ -1,4 +1,4 @@
-// Device tests: one Vulkan device per process (guide §7), validation layer
+// Device tests: one Vulkan device per process, validation layer
 // on, and a check after every test that the layer said nothing. Golden
 // images live in tests/golden; on a mismatch the actual, expected and diff
 // PNGs are written to the build tree (M3G_GOLDEN_OUT) and named in the

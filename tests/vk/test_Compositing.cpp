@@ -1,7 +1,8 @@
-// Golden tests of the per-fragment operations (spec digest §5.8):
+// Golden tests of the per-fragment operations (JSR-184 1.1, CompositingMode):
 // blending on a known background, alpha test, depth test and write, depth
 // offset, colour and alpha write masks; PolygonMode culling and winding;
-// the node alpha factor along the path (§4.3). Identity camera unless said:
+// the node alpha factor along the path (JSR-184 1.1, Node.setAlphaFactor).
+// Identity camera unless said:
 // NDC z maps to depth (z + 1) / 2, smaller is nearer.
 #include "SceneKit.h"
 #include "VkTestSupport.h"

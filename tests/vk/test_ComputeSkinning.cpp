@@ -25,6 +25,8 @@
 #include <string>
 #include <vector>
 
+#include <m3g/skin/InfluenceTable.h>
+
 #include "ComputeDeformer.h"
 #include "ComputeRunner.h"
 #include "Context.h"

@@ -25,7 +25,8 @@ namespace {
 constexpr double kAgreeShare = 0.01;
 constexpr double kAgreePsnr = 35.0;
 // The floor: how many reference images must agree. Set from the measured
-// result (see the closing note of the renderer issue); raise it as features land.
+// result (docs/rendering.md, "Agreement with Nokia's renders"); raise it as
+// features land.
 constexpr int kAgreeFloor = 60;  // measured: 62 of 62 on lavapipe (LLVM 15), 2 of slack for CPU differences
 
 struct Row {

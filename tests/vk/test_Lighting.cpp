@@ -1,6 +1,7 @@
-// Golden tests of the fixed-function lighting (spec digest §5.5), vertex
-// colours and shading, and fog (§5.6). Scenes are flat quads facing +Z under
-// an identity camera, so every expected level follows from the formulas:
+// Golden tests of the fixed-function lighting (JSR-184 1.1, Light and
+// Material), vertex colours and shading, and fog (JSR-184 1.1, Fog). Scenes
+// are flat quads facing +Z under an identity camera, so every expected level
+// follows from the formulas:
 // colour = emissive + sum_i att_i spot_i (L_i ambient_m + max(N.L, 0) L_i
 // diffuse_m + (N.L > 0 ? max(N.H, 0)^shininess : 0) L_i specular_m), clamped
 // to [0, 1] when written (interpolated unclamped, as the reference renders).

@@ -1,4 +1,4 @@
-// Misuse of Graphics3D (spec digest §4.26) beyond test_SceneOrder's
+// Misuse of Graphics3D (JSR-184 1.1, Graphics3D) beyond test_SceneOrder's
 // Graphics3DRenderExceptions: null arguments, missing camera, targets of
 // the wrong kind, binding twice, exceptions in the middle of a frame, and
 // objects dropped while the frame that uses them is still unfinished.
@@ -198,7 +198,8 @@ TEST_F(VkTest, ObjectsDroppedBeforeReleaseTargetStayAliveForTheFrame) {
         g->render(world.get());
         g->render(immediate.quad.vb.get(), immediate.quad.ib.get(), immediate.appearance.get(), nullptr);
         if (dropEarly) {
-            // Graphics3D keeps the World's camera and lights (spec §4.26);
+            // Graphics3D keeps the World's camera and lights (JSR-184 1.1,
+            // Graphics3D.render(World));
             // forget those too so that nothing of the scene survives.
             g->setCamera(nullptr, nullptr);
             g->resetLights();

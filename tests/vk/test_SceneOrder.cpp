@@ -1,5 +1,5 @@
-// Golden tests of what gets drawn and in which order (spec digest §5.3,
-// §4.26): Appearance layers, opaque before blended, render(World) vs
+// Golden tests of what gets drawn and in which order (JSR-184 1.1,
+// Graphics3D.render and Node): Appearance layers, opaque before blended, render(World) vs
 // render(Node, Transform) vs immediate mode with scope, near-plane
 // clipping, SkinnedMesh and MorphingMesh drawn from deformed vertices; and
 // Graphics3D's exceptions.

@@ -1,4 +1,4 @@
-// The short soak (issue 8): an animated skinned corpus model loaded,
+// The short soak: an animated skinned corpus model loaded,
 // animated, rendered and dropped again every 50 frames with immediate-mode
 // draws mixed in. After each reload the GPU mirrors (live buffers, live
 // textures, device memory) must come back to exactly the same values: every

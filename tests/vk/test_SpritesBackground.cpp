@@ -1,4 +1,4 @@
-// Golden tests of Sprite3D (spec digest §5.10) and Background (§5.9).
+// Golden tests of Sprite3D and Background (JSR-184 1.1, Sprite3D and Background).
 // Sprites use a parallel camera 2 units tall on a 64x64 target, so one unit
 // is 32 pixels and a scaled sprite (a 1x1 square) is 32x32 pixels.
 #include "SceneKit.h"

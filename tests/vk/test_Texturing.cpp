@@ -1,4 +1,4 @@
-// Golden tests of texturing (spec digest §5.7): the texture environment
+// Golden tests of texturing (JSR-184 1.1, Texture2D): the texture environment
 // table for every function and Image2D format, two units, texture
 // transforms, wrapping, filtering, mipmapping and texcoord scale/bias.
 #include "SceneKit.h"
@@ -30,7 +30,8 @@ constexpr int kFormats[5] = {Image2D::ALPHA, Image2D::LUMINANCE, Image2D::LUMINA
 constexpr int kFuncs[5] = {Texture2D::FUNC_REPLACE, Texture2D::FUNC_MODULATE, Texture2D::FUNC_DECAL,
                            Texture2D::FUNC_BLEND, Texture2D::FUNC_ADD};
 
-/// The §5.7 table written out cell by cell. `t` holds the texel as the
+/// The texture function table of JSR-184 1.1, Texture2D, written out cell by
+/// cell. `t` holds the texel as the
 /// format stores it: luminance in r (and g, b), colour in rgb, alpha in a.
 /// Returns false for the cells the table leaves undefined.
 bool textureEnv(int func, int format, const Colour& f, const Colour& t, const Colour& cc, Colour& out) {

@@ -1,11 +1,13 @@
-// C++ mirror of shaders/draw_uniforms.glsl (std140). Matrices are column
-// major, as GLSL reads them.
+// The uniform block of one draw: the C++ mirror of shaders/draw_uniforms.glsl
+// (std140). Scene fills it (frame preparation, StateTranslation), a back end
+// copies it to the GPU unchanged. Matrices are column major, as GLSL reads
+// them.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 
-namespace m3g::vk {
+namespace m3g::frame {
 
 struct alignas(16) LightUniforms {
     float position[4];
@@ -60,4 +62,4 @@ static_assert(offsetof(DrawUniforms, misc) == 576);
 static_assert(offsetof(DrawUniforms, lights) == 592);
 static_assert(sizeof(DrawUniforms) == 1104);
 
-}  // namespace m3g::vk
+}  // namespace m3g::frame

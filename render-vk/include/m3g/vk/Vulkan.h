@@ -70,13 +70,13 @@ DebugView debugView() noexcept;
 /// Whether lit vertex colours are clamped to [0, 1] before they are
 /// interpolated (applies to every Graphics3D from the next frame on).
 /// Off by default, matching the reference renders (Nokia's M3G engine on
-/// Mesa's OpenGL ES 1.1, ../shared/corpus/REFERENCE.md): Mesa clamps vertex
+/// Mesa's OpenGL ES 1.1, docs/rendering.md): Mesa clamps vertex
 /// colours only in desktop compatibility contexts, so a vertex lit above 1
 /// (e.g. a directional light plus an ambient light on a white Material)
 /// brightens a MODULATE texture and the colours interpolated towards it;
 /// the colour is clamped only when written to the target. On, the lit colour
 /// is clamped per vertex as the OpenGL ES 1.1 specification describes
-/// (M3G spec §5.5 via GL ES lighting). Environment variable
+/// (JSR-184 1.1, Light and Material, via GL ES lighting). Environment variable
 /// M3G_CLAMP_LIGHTING=1 turns it on at start-up.
 void setLitColorClamping(bool clamp) noexcept;
 bool litColorClamping() noexcept;

@@ -1,6 +1,6 @@
 // A Graphics surface shown in a window through a Vulkan swapchain: the
 // m3g-vk stand-in for a MIDlet's Canvas (an extension; M3G itself only
-// knows lcdui Graphics and Image2D, spec digest §4.26). A port binds it as
+// knows lcdui Graphics and Image2D, JSR-184 1.1, Graphics3D.bindTarget). A port binds it as
 // any Graphics: bindTarget(window) ... releaseTarget() presents the frame.
 //
 // Unlike a plain Graphics, whose pixels travel to the GPU at bindTarget and
@@ -63,6 +63,9 @@ public:
     std::uint64_t presentedFrames() const noexcept { return presented_; }
 
     // ---- Engine interface (render-vk) ----
+    /// The live WindowTarget whose address (as a Graphics) is `identity`,
+    /// or null: how the renderer knows a bound Graphics is a window.
+    static WindowTarget* find(const void* identity) noexcept;
     Swapchain& swapchain();
     WindowOverlay* overlay() const noexcept { return overlay_.get(); }
     bool takeReadbackRequest() noexcept;

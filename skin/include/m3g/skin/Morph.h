@@ -1,4 +1,4 @@
-// Morph-target blending (spec digest §4.9): out = B + sum_i w_i (T_i - B),
+// Morph-target blending (JSR-184 1.1, MorphingMesh): out = B + sum_i w_i (T_i - B),
 // element-wise over float arrays (positions, normals, colours, texture
 // coordinates alike). ozz-style job: spans, validate(), run(), no memory.
 #pragma once

@@ -1,6 +1,6 @@
-// The per-frame bone palette of a skinned mesh (spec digest §5.11): one entry
-// per bone, computed once per bone per frame, consumed by SkinningJob (and,
-// with the same layout, by the skinning compute shader).
+// The per-frame bone palette of a skinned mesh (JSR-184 1.1, SkinnedMesh): one
+// entry per bone, computed once per bone per frame, consumed by SkinningJob
+// (and, with the same layout, by the skinning compute shader).
 #pragma once
 
 #include <array>

@@ -1,4 +1,4 @@
-// Linear blend skinning of positions and normals (spec digest §5.11):
+// Linear blend skinning of positions and normals (JSR-184 1.1, SkinnedMesh):
 //   p' = sum_k w_k * P[b_k] * (s * p + bias)        (P: PaletteEntry::position)
 //   n' = normalise(sum_k w_k * N[b_k] * n)          (N: PaletteEntry::normal)
 // over a list of vertices that all use the same number of influences, the
@@ -49,7 +49,8 @@ struct SkinningJob {
 
     /// Influences used per listed vertex: slots 0 .. influenceCount-1.
     /// 0 means "no bone": the vertex stays in mesh space (s * p + bias, the
-    /// normal renormalised), as Nokia's engine leaves it (spec digest §8.9).
+    /// normal renormalised), as Nokia's M3G implementation (reference)
+    /// leaves it.
     int influenceCount = 0;
     /// Slot k of vertex v is at [v * influenceStride + k] in boneIndices and
     /// boneWeights (InfluenceTable's layout: influenceStride = N).
