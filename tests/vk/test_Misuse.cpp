@@ -1,7 +1,10 @@
-// Misuse of Graphics3D (JSR-184 1.1, Graphics3D) beyond test_SceneOrder's
-// Graphics3DRenderExceptions: null arguments, missing camera, targets of
-// the wrong kind, binding twice, exceptions in the middle of a frame, and
-// objects dropped while the frame that uses them is still unfinished.
+// Misuse of Graphics3D (JSR-184 1.1, Graphics3D) as the device sees it: a
+// viewport outside the target, exceptions in the middle of a frame, and
+// objects dropped while the frame that uses them is still unfinished. The
+// argument and state checks that hand nothing to a back end (null
+// arguments, missing camera, targets of the wrong kind, binding twice,
+// background formats, vertex data without positions) are CPU tests:
+// tests/unit/test_Graphics3DNullBackend.cpp.
 #include <cmath>
 #include <limits>
 
@@ -29,113 +32,6 @@ std::vector<std::uint8_t> pixelsOf(const Image2D& image) {
 }
 
 }  // namespace
-
-TEST_F(VkTest, MisuseNullArgumentsThrowNullPointerException) {
-    Graphics3D* g = fresh();
-    m3gtest::Quad q = m3gtest::makeQuad(-1, -1, 1, 1);
-    Ref<Appearance> app(new Appearance());
-    // Null checks come first, with or without a target.
-    EXPECT_THROW(g->render(static_cast<World*>(nullptr)), NullPointerException);
-    EXPECT_THROW(g->render(static_cast<Node*>(nullptr), nullptr), NullPointerException);
-    auto img = target(8, 8);
-    g->bindTarget(img.get());
-    Ref<Camera> cam(new Camera());
-    g->setCamera(cam.get(), nullptr);
-    EXPECT_THROW(g->render(static_cast<World*>(nullptr)), NullPointerException);
-    EXPECT_THROW(g->render(static_cast<Node*>(nullptr), nullptr), NullPointerException);
-    EXPECT_THROW(g->render(nullptr, q.ib.get(), app.get(), nullptr), NullPointerException);
-    EXPECT_THROW(g->render(q.vb.get(), nullptr, app.get(), nullptr), NullPointerException);
-    EXPECT_THROW(g->render(q.vb.get(), q.ib.get(), nullptr, nullptr), NullPointerException);
-    EXPECT_THROW(g->render(q.vb.get(), q.ib.get(), nullptr, nullptr, 1), NullPointerException);
-    g->releaseTarget();
-}
-
-TEST_F(VkTest, MisuseNoCurrentCameraThrowsIllegalState) {
-    Graphics3D* g = fresh();
-    m3gtest::Quad q = m3gtest::makeQuad(-1, -1, 1, 1);
-    Ref<Appearance> app(new Appearance());
-    Ref<Mesh> mesh(new Mesh(q.vb.get(), q.ib.get(), app.get()));
-    auto img = target(8, 8);
-    g->bindTarget(img.get());
-    EXPECT_THROW(g->render(mesh.get(), nullptr), IllegalStateException);
-    EXPECT_THROW(g->render(q.vb.get(), q.ib.get(), app.get(), nullptr), IllegalStateException);
-    // Clearing needs no camera.
-    EXPECT_NO_THROW(g->clear(nullptr));
-    g->releaseTarget();
-}
-
-TEST_F(VkTest, MisuseVertexBufferWithoutPositions) {
-    Graphics3D* g = fresh();
-    m3gtest::Quad q = m3gtest::makeQuad(-1, -1, 1, 1);
-    Ref<VertexBuffer> empty(new VertexBuffer());
-    Ref<Appearance> app(new Appearance());
-    auto img = target(8, 8);
-    g->bindTarget(img.get());
-    Ref<Camera> cam(new Camera());
-    g->setCamera(cam.get(), nullptr);
-    // Immediate mode: the vertex data is invalid.
-    EXPECT_THROW(g->render(empty.get(), q.ib.get(), app.get(), nullptr), IllegalStateException);
-    // The same through a Mesh (render(Node)): found while recording.
-    Ref<Mesh> mesh(new Mesh(empty.get(), q.ib.get(), app.get()));
-    EXPECT_THROW(g->render(mesh.get(), nullptr), IllegalStateException);
-    g->releaseTarget();
-}
-
-TEST_F(VkTest, MisuseBindTwiceKeepsTheFirstTarget) {
-    Graphics3D* g = fresh();
-    auto img = target(8, 8);
-    Ref<Graphics> graphics(new Graphics(8, 8));
-    g->bindTarget(img.get());
-    EXPECT_THROW(g->bindTarget(graphics.get()), IllegalStateException);
-    EXPECT_THROW(g->bindTarget(img.get(), false, Graphics3D::ANTIALIAS), IllegalStateException);
-    EXPECT_EQ(g->getTarget().get(), static_cast<RefCounted*>(img.get()));
-    g->releaseTarget();
-    g->bindTarget(graphics.get());
-    EXPECT_THROW(g->bindTarget(img.get()), IllegalStateException);
-    EXPECT_EQ(g->getTarget().get(), static_cast<RefCounted*>(graphics.get()));
-    g->releaseTarget();
-    // Release without a bound target: a no-op, however often.
-    g->releaseTarget();
-    g->releaseTarget();
-    EXPECT_EQ(g->getTarget(), nullptr);
-}
-
-TEST_F(VkTest, MisuseTargetOfWrongFormatOrSize) {
-    Graphics3D* g = fresh();
-    for (int format : {Image2D::ALPHA, Image2D::LUMINANCE, Image2D::LUMINANCE_ALPHA}) {
-        Ref<Image2D> wrong(new Image2D(format, 4, 4));
-        EXPECT_THROW(g->bindTarget(wrong.get()), IllegalArgumentException) << "format " << format;
-    }
-    Ref<Image2D> immutableRgb = m3gtest::solidImage(Image2D::RGB, 2, 2, {1, 2, 3});
-    EXPECT_THROW(g->bindTarget(immutableRgb.get()), IllegalArgumentException);
-    const Limits& l = getLimits();
-    Ref<Image2D> tooWide(new Image2D(Image2D::RGB, l.maxViewportWidth + 1, 1));
-    EXPECT_THROW(g->bindTarget(tooWide.get()), IllegalArgumentException);
-    Ref<Image2D> tooTall(new Image2D(Image2D::RGBA, 1, l.maxViewportHeight + 1));
-    EXPECT_THROW(g->bindTarget(tooTall.get()), IllegalArgumentException);
-    EXPECT_EQ(g->getTarget(), nullptr);
-    EXPECT_THROW(g->clear(nullptr), IllegalStateException);  // nothing was bound
-}
-
-TEST_F(VkTest, MisuseBackgroundFormatAgainstTarget) {
-    Graphics3D* g = fresh();
-    Ref<Background> rgbBackground(new Background());
-    rgbBackground->setImage(m3gtest::solidImage(Image2D::RGB, 2, 2, {1, 2, 3}).get());
-    Ref<Background> rgbaBackground(new Background());
-    rgbaBackground->setImage(m3gtest::solidImage(Image2D::RGBA, 2, 2, {1, 2, 3, 4}).get());
-    // RGBA Image2D target: only RGBA background images.
-    auto rgba = target(8, 8);
-    g->bindTarget(rgba.get());
-    EXPECT_THROW(g->clear(rgbBackground.get()), IllegalArgumentException);
-    EXPECT_NO_THROW(g->clear(rgbaBackground.get()));
-    g->releaseTarget();
-    // A Graphics surface counts as RGB.
-    Ref<Graphics> graphics(new Graphics(8, 8));
-    g->bindTarget(graphics.get());
-    EXPECT_THROW(g->clear(rgbaBackground.get()), IllegalArgumentException);
-    EXPECT_NO_THROW(g->clear(rgbBackground.get()));
-    g->releaseTarget();
-}
 
 TEST_F(VkTest, MisuseViewportAndDepthRangeOutOfRange) {
     Graphics3D* g = fresh();

@@ -131,27 +131,3 @@ TEST_F(VkTest, AntialiasSmoothsEdgesAndKeepsPriorContents) {
     else
         GTEST_SKIP() << "device without multisampling";
 }
-
-TEST_F(VkTest, WorldOwnTransformCancelsOut) {
-    // Camera and meshes are placed relative to the World (the camera's
-    // getTransformTo(world)), so moving the World itself changes nothing.
-    Triangle t = makeTriangle();
-    auto renderWith = [&](float worldX) {
-        Ref<World> world(new World());
-        Ref<Camera> cam(new Camera());
-        world->addChild(cam.get());
-        world->setActiveCamera(cam.get());
-        Ref<Mesh> mesh(new Mesh(t.vb.get(), t.ib.get(), Ref<Appearance>(new Appearance()).get()));
-        world->addChild(mesh.get());
-        world->setTranslation(worldX, 0.0f, 0.0f);
-        auto img = target(32, 32);
-        Graphics3D* g = Graphics3D::getInstance();
-        g->bindTarget(img.get());
-        g->render(world.get());
-        g->releaseTarget();
-        return toRgba(*img);
-    };
-    const m3gcli::RgbaImage a = renderWith(0.0f), b = renderWith(0.7f);
-    EXPECT_EQ(m3gcli::compareImages(a, b, 0).differing, 0);
-    EXPECT_NE(a.pixels[(31 * 32 + 1) * 4], 0);  // the red vertex corner is drawn
-}

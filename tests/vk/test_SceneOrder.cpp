@@ -1,8 +1,8 @@
 // Golden tests of what gets drawn and in which order (JSR-184 1.1,
 // Graphics3D.render and Node): Appearance layers, opaque before blended, render(World) vs
 // render(Node, Transform) vs immediate mode with scope, near-plane
-// clipping, SkinnedMesh and MorphingMesh drawn from deformed vertices; and
-// Graphics3D's exceptions.
+// clipping, SkinnedMesh and MorphingMesh drawn from deformed vertices.
+// Graphics3D's exceptions are CPU tests (tests/unit/test_Graphics3DNullBackend.cpp).
 #include "SceneKit.h"
 #include "VkTestSupport.h"
 
@@ -254,52 +254,4 @@ TEST_F(VkTest, MorphingMeshDrawsWeightedTarget) {
     EXPECT_PIXEL_TOL(*img, 12, 48, 0, kClear);
     EXPECT_PIXEL_TOL(*img, 52, 48, 0, kClear);
     expectGolden(*img, "order_morphing_mesh", 3, 0.0);
-}
-
-TEST_F(VkTest, Graphics3DRenderExceptions) {
-    Graphics3D* g = Graphics3D::getInstance();
-    g->releaseTarget();
-    Ref<Camera> cam(new Camera());
-    g->setCamera(cam.get(), nullptr);
-    g->resetLights();
-    Quad q = makeQuad(-1, -1, 1, 1);
-    Ref<Appearance> app(new Appearance());
-    Ref<Mesh> m(new Mesh(q.vb.get(), q.ib.get(), app.get()));
-    Ref<World> world = worldWithCamera();
-
-    // No target bound: IllegalStateException.
-    EXPECT_THROW(g->render(q.vb.get(), q.ib.get(), app.get(), nullptr), IllegalStateException);
-    EXPECT_THROW(g->render(m.get(), nullptr), IllegalStateException);
-    EXPECT_THROW(g->render(world.get()), IllegalStateException);
-    EXPECT_THROW(g->clear(nullptr), IllegalStateException);
-
-    auto img = target(8, 8);
-    g->bindTarget(img.get());
-    // render(World): no active camera, or a camera outside that World.
-    Ref<World> noCamera(new World());
-    EXPECT_THROW(g->render(noCamera.get()), IllegalStateException);
-    Ref<World> foreign(new World());
-    Ref<Camera> outside(new Camera());
-    foreign->setActiveCamera(outside.get());
-    EXPECT_THROW(g->render(foreign.get()), IllegalStateException);
-    // render(Node) of a Light: IllegalArgumentException.
-    Ref<Light> light(new Light());
-    EXPECT_THROW(g->render(light.get(), nullptr), IllegalArgumentException);
-    // Immediate mode with an index beyond the vertex count: IllegalStateException.
-    Ref<VertexBuffer> three(new VertexBuffer());
-    const float zero[3] = {0, 0, 0};
-    three->setPositions(m3gtest::positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}).get(), m3gtest::kPositionScale, zero);
-    EXPECT_THROW(g->render(three.get(), q.ib.get(), app.get(), nullptr), IllegalStateException);
-    g->releaseTarget();
-
-    // clear() with an RGBA background image on an RGB target: IllegalArgumentException.
-    Ref<Image2D> rgbTarget(new Image2D(Image2D::RGB, 8, 8));
-    Ref<Background> bg(new Background());
-    bg->setImage(m3gtest::solidImage(Image2D::RGBA, 2, 2, {1, 2, 3, 4}).get());
-    g->bindTarget(rgbTarget.get());
-    EXPECT_THROW(g->clear(bg.get()), IllegalArgumentException);
-    // ... and render(World) with that background: IllegalStateException.
-    world->setBackground(bg.get());
-    EXPECT_THROW(g->render(world.get()), IllegalStateException);
-    g->releaseTarget();
 }
