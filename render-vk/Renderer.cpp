@@ -71,6 +71,7 @@ void Renderer::startFrame(const frame::Target& target) {
     if (target_.prepare(target)) resources_->forgetTextureSets();  // they may name the old prior image
     resources_->beginFrame();
     streams_->beginFrame();
+    lastKey_ = ~0ull;  // pipelines may have been evicted at the last frame's end
     if (target_.samples() != VK_SAMPLE_COUNT_1_BIT) preparePrior();
     started_ = true;
 }
@@ -102,7 +103,11 @@ void Renderer::prepare(const frame::Draw& d, const frame::DrawList& list, frame:
     frame::PipelineKey key = d.pipeline;
     key.samples = static_cast<std::uint8_t>(target_.samples());
     p.pipelineKey = key.packed();
-    p.pipeline = pipelines_->get(key);
+    if (p.pipelineKey != lastKey_) {
+        lastPipeline_ = pipelines_->get(key);
+        lastKey_ = p.pipelineKey;
+    }
+    p.pipeline = lastPipeline_;
     p.raster = d.raster;
     streams_->uniforms(list.uniforms[d.uniforms], p.uniforms, p.uniformOffset);
     const Image* images[2] = {nullptr, nullptr};

@@ -72,6 +72,10 @@ private:
     VkRect2D scissor_{};
     std::vector<PreparedDraw> prepared_;
     PreparedDraw prior_;  // the prior contents' quad of a multisampled frame
+    // The pipeline of the previous draw prepared in this frame: consecutive
+    // draws mostly share it, and it is already marked used by the frame.
+    std::uint64_t lastKey_ = ~0ull;
+    VkPipeline lastPipeline_ = VK_NULL_HANDLE;
 };
 
 }  // namespace m3g::vk

@@ -187,9 +187,12 @@ private:
     detail::FrameState& frame();
     /// The bound target as the back end sees it.
     frame::Target frameTarget() const;
-    /// Hands a clear, or the queue collected last, to the back end.
+    /// Hands a clear to the back end.
     void drawClear(const Background* background);
-    void drawQueue();
+    /// Turns the queue collected last into the draw list (deforming meshes,
+    /// throwing for vertex data a draw cannot use), then hands it over.
+    void prepareQueue();
+    void drawPrepared();
     void requireTarget(const char* where) const;
     void bindCommon(RefCounted* target, int width, int height, bool depthBuffer, int hints, const char* where);
 

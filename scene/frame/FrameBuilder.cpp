@@ -46,13 +46,17 @@ void colorStream(const VertexArray* a, std::vector<float>& out) {
         for (int k = 0; k < 4; ++k) out[v * 4 + k] = k < c ? static_cast<float>(a->value(v, k) & 0xFF) / 255.0f : 1.0f;
 }
 
-/// Identity and revision of the VertexBuffer and its arrays.
+/// Identity and revision of the VertexBuffer's arrays, and its identity.
+/// The VertexBuffer's own revision is left out: what else it holds (scale,
+/// bias, default colour) goes into the uniforms, not the streams, so an
+/// animated default colour does not copy the vertices again.
 std::array<std::uint64_t, 12> signatureOf(const VertexBuffer& vb) {
     std::array<std::uint64_t, 12> sig{};
-    const Object3D* parts[6] = {&vb, vb.positions(), vb.normals(), vb.colors(), vb.texCoords(0), vb.texCoords(1)};
-    for (int i = 0; i < 6; ++i) {
-        sig[i * 2] = parts[i] ? parts[i]->getObjectId() : 0;
-        sig[i * 2 + 1] = parts[i] ? parts[i]->getRevision() : 0;
+    sig[0] = vb.getObjectId();
+    const Object3D* arrays[5] = {vb.positions(), vb.normals(), vb.colors(), vb.texCoords(0), vb.texCoords(1)};
+    for (int i = 0; i < 5; ++i) {
+        sig[2 + i * 2] = arrays[i] ? arrays[i]->getObjectId() : 0;
+        sig[3 + i * 2] = arrays[i] ? arrays[i]->getRevision() : 0;
     }
     return sig;
 }
@@ -67,8 +71,13 @@ FrameBuilder::FrameBuilder() = default;
 FrameBuilder::~FrameBuilder() = default;
 
 FrameBuilder::Entry& FrameBuilder::entry(const Object3D& object) {
-    Entry& e = entries_[object.getObjectId()];
+    const std::uint64_t id = object.getObjectId();
+    for (const auto& [recentId, e] : recent_)
+        if (recentId == id) return *e;
+    Entry& e = entries_[id];
     if (!e.owner.get()) e.owner = const_cast<Object3D*>(&object);
+    recent_[1] = recent_[0];
+    recent_[0] = {id, &e};
     return e;
 }
 
@@ -187,6 +196,7 @@ void FrameBuilder::build(const RenderQueue& queue, const frame::ViewState& view,
 
 std::span<const std::uint64_t> FrameBuilder::sweep() {
     released_.clear();
+    recent_ = {};
     for (auto it = entries_.begin(); it != entries_.end();) {
         if (!it->second.owner.get()) {
             released_.push_back(it->first);

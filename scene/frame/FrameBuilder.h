@@ -66,12 +66,16 @@ private:
         frame::VertexSource source = frame::VertexSource::Plain;
         VertexLayout layout;
     };
+    /// The entry of `object`, made on first use. Consecutive draws mostly
+    /// share their vertex and index data, so the last two entries found are
+    /// kept at hand (entries never move; sweep() drops the shortcuts).
     Entry& entry(const Object3D& object);
     /// Refreshes `e` for this call and fills `ref`.
     void prepareVertices(Entry& e, const VertexBuffer& vb, const Mesh* mesh, bool gpuDeform, frame::VertexRef& ref);
     const Object3D* object(std::uint64_t id) const;
 
     std::unordered_map<std::uint64_t, Entry> entries_;
+    std::array<std::pair<std::uint64_t, Entry*>, 2> recent_{};
     std::uint64_t call_ = 0;
     std::vector<std::uint64_t> released_;
     std::array<std::vector<float>, frame::STREAM_COUNT> scratch_;

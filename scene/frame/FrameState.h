@@ -18,7 +18,8 @@ struct FrameState {
     std::unique_ptr<frame::FrameBackend> backend;
     RenderQueue queue;
     FrameBuilder builder;
-    frame::DrawList list;
+    frame::DrawList list;       ///< the draws of the current render call
+    frame::DrawList clearList;  ///< the current clear (render(World) prepares its draws first)
     /// The bound target's pixel adapter (one of them), set at bindTarget.
     std::optional<ImageTargetPixels> imagePixels;
     std::optional<GraphicsTargetPixels> graphicsPixels;

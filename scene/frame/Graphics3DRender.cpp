@@ -72,19 +72,23 @@ void Graphics3D::useBackend(std::unique_ptr<frame::FrameBackend> backend) {
 void Graphics3D::drawClear(const Background* background) {
     detail::FrameState& f = frame();
     const frame::ViewState view = detail::viewState(*this);
-    f.list.reset();
+    frame::DrawList& list = f.clearList;
+    list.reset();
     const frame::DrawOptions options = f.backend->options();
-    f.list.clear = detail::translateClear(background, view, targetWidth_, targetHeight_, options.vulkanClipSpace,
-                                          f.list.uniforms);
-    if (f.list.clear.hasImage) f.builder.track(*background->getImage());
-    f.backend->clear(frameTarget(), view, f.list, f.builder);
+    list.clear = detail::translateClear(background, view, targetWidth_, targetHeight_, options.vulkanClipSpace,
+                                        list.uniforms);
+    if (list.clear.hasImage) f.builder.track(*background->getImage());
+    f.backend->clear(frameTarget(), view, list, f.builder);
 }
 
-void Graphics3D::drawQueue() {
+void Graphics3D::prepareQueue() {
     detail::FrameState& f = frame();
-    const frame::ViewState view = detail::viewState(*this);
-    f.builder.build(f.queue, view, skinningMode_ == SKINNING_COMPUTE, f.backend->options(), f.list);
-    f.backend->draw(frameTarget(), view, f.list, f.builder);
+    f.builder.build(f.queue, detail::viewState(*this), skinningMode_ == SKINNING_COMPUTE, f.backend->options(), f.list);
+}
+
+void Graphics3D::drawPrepared() {
+    detail::FrameState& f = frame();
+    f.backend->draw(frameTarget(), detail::viewState(*this), f.list, f.builder);
 }
 
 void Graphics3D::clear(Background* background) {
@@ -125,8 +129,11 @@ void Graphics3D::render(World* world) {
     // World's own transformation cancels out.
     q.collectNode(*world, worldToCamera_);
     q.sort();
+    // The draws first: vertex data a draw cannot use throws before the
+    // clear reaches the back end.
+    prepareQueue();
     drawClear(background);
-    drawQueue();
+    drawPrepared();
 }
 
 void Graphics3D::render(Node* node, const Transform* transform) {
@@ -144,7 +151,8 @@ void Graphics3D::render(Node* node, const Transform* transform) {
     const Transform nodeToWorld = transform ? *transform : Transform();
     q.collectNode(*node, worldToCamera_ * nodeToWorld);
     q.sort();
-    drawQueue();
+    prepareQueue();
+    drawPrepared();
 }
 
 void Graphics3D::render(VertexBuffer* vertices, IndexBuffer* triangles, Appearance* appearance,
@@ -167,7 +175,8 @@ void Graphics3D::render(VertexBuffer* vertices, IndexBuffer* triangles, Appearan
         if (l.light) q.addLight(*l.light, worldToCamera_ * l.toWorld);
     const Transform modelToWorld = transform ? *transform : Transform();
     q.addSubmesh(vertices, triangles, appearance, worldToCamera_ * modelToWorld, scope);
-    drawQueue();
+    prepareQueue();
+    drawPrepared();
 }
 
 }  // namespace m3g

@@ -1,4 +1,4 @@
-// examples/CliArgs: the m3g command line.
+// tools/m3g/CliArgs: the m3g command line.
 #include <gtest/gtest.h>
 
 #include <initializer_list>

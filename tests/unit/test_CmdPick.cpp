@@ -1,4 +1,4 @@
-// examples/cmd_pick: `m3g pick` argument parsing and report on an in-memory
+// tools/m3g/cmd_pick: `m3g pick` argument parsing and report on an in-memory
 // World with a hand-computed hit.
 #include <gtest/gtest.h>
 

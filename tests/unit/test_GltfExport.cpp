@@ -1,4 +1,4 @@
-// examples/Gltf*: the glTF export's conversions checked against hand-computed
+// tools/m3g/Gltf*: the glTF export's conversions checked against hand-computed
 // values (strip unrolling and winding, scale/bias, quaternions, matrices,
 // keyframe time mapping, SPLINE tangents, SLERP arcs, materials, skins,
 // images, the GLB container).

@@ -1,4 +1,4 @@
-// JarArchive (examples/): listing, reading, corrupt input and loading .m3g
+// JarArchive (tools/m3g/): listing, reading, corrupt input and loading .m3g
 // entries whose external references point at other entries. The archives
 // are written here with minizip's zip writer.
 #include <gtest/gtest.h>

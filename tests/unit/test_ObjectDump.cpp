@@ -1,4 +1,4 @@
-// examples/ObjectDump (m3g info reporting): JSON dump of every getter value,
+// tools/m3g/ObjectDump (m3g info reporting): JSON dump of every getter value,
 // scene tree, counts by class. The JSON is read back with nlohmann::json,
 // which rejects invalid documents (NaN, Infinity, trailing commas, ...).
 #include <gtest/gtest.h>

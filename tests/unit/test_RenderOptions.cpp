@@ -1,4 +1,4 @@
-// `m3g render` options (examples/RenderOptions): parsing, background colours
+// `m3g render` options (tools/m3g/RenderOptions): parsing, background colours
 // and frame file names.
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The compute-shader path of skinning and morphing (Graphics3D's m3g-vk
 // extension SKINNING_COMPUTE; render-vk/ComputeDeformer, shaders/skin.comp
-// and morph.comp) against the CPU path (scene/MeshDeformer with the skin/
+// and morph.comp) against the CPU path (scene/deform/MeshDeformer with the skin/
 // kernels): the shaders' output read back and compared value by value on
 // random meshes, and rendered images compared, on lavapipe with the
 // validation layer on.

@@ -6,7 +6,7 @@
 // is held to a loose bound only (allocators keep what they keep): it catches
 // the kind of growth lavapipe's per-draw shader recompilation caused (about
 // 3.4 MiB per frame here, before draw_uniforms.glsl read its fields through
-// a dynamic index). The long run is `m3g bench soak` (examples/cmd_bench_soak.cpp).
+// a dynamic index). The long run is `m3g bench soak` (tools/m3g/cmd_bench_soak.cpp).
 #include <filesystem>
 
 #include <cstdio>

@@ -1,4 +1,4 @@
-// `m3g bench ...`: kernel benchmarks printed as tables (examples/cmd_bench.cpp).
+// `m3g bench ...`: kernel benchmarks printed as tables (tools/m3g/cmd_bench.cpp).
 #pragma once
 
 namespace m3gcli {

@@ -25,7 +25,7 @@
 //   m3g bench soak FILE [--frames N] [--reload K] [--size WxH] [--report R]
 //                                 memory over a long run with reloads (verdict)
 //   m3g version
-//   m3g bench skin|morph [...]  kernel benchmarks (examples/cmd_bench.cpp)
+//   m3g bench skin|morph [...]  kernel benchmarks (tools/m3g/cmd_bench.cpp)
 // Exit status: 0 success, 1 load/save failure (the IOException message on
 // stderr), 2 bad command line.
 #include <cstdio>

@@ -1,7 +1,7 @@
 // One ComputeDeformer on the shared device, driven by one-shot submits, with
 // an output buffer the host reads back: the compute path's harness, shared by
 // the agreement tests (tests/vk/test_ComputeSkinning.cpp) and `m3g bench
-// skin|morph` (examples/ComputeBench.cpp). Reaches into render-vk's internals,
+// skin|morph` (tools/m3g/ComputeBench.cpp). Reaches into render-vk's internals,
 // so its users add render-vk to their include path and link volk_static.
 #pragma once
 

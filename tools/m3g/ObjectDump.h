@@ -1,6 +1,6 @@
 // Reports on an object graph for `m3g info`: a JSON dump of every property,
 // a human-readable scene tree and object counts by class.
-// Part of m3g_cli_support (examples/), not of the library.
+// Part of m3g_cli_support (tools/m3g/), not of the library.
 //
 // Reachable objects: everything reachable from the roots through
 // getReferences(), plus the bones of SkinnedMeshes and the alignment

@@ -2,7 +2,7 @@
 // its World to T ms (default 0) and pick through the World's active camera at
 // normalised viewport coordinates (X, Y) ((0, 0) top left, (1, 1) bottom
 // right; JSR-184 1.1, Group.pick). Prints the RayIntersection or
-// "no hit". Part of m3g_cli_support (examples/), not of the library.
+// "no hit". Part of m3g_cli_support (tools/m3g/), not of the library.
 #pragma once
 
 #include <span>

@@ -1,6 +1,6 @@
 // Command-line arguments of the m3g tool:
 //   m3g <command> [FILE] [--json] [--lenient] [--time T] [--compress] [OUT]
-// Part of m3g_cli_support (examples/), not of the library.
+// Part of m3g_cli_support (tools/m3g/), not of the library.
 #pragma once
 
 #include <optional>

@@ -1,7 +1,7 @@
 // A glTF 2.0 document being built: the JSON tree (nlohmann::ordered_json)
 // and one binary buffer, with helpers that append typed accessors, and the
 // two container formats (.glb with a BIN chunk, .gltf with a data: URI or a
-// side .bin file). Part of the `m3g export` tool (examples/), not of the
+// side .bin file). Part of the `m3g export` tool (tools/m3g/), not of the
 // library. glTF 2.0 specification §3.6 (buffers, views, accessors), §4.4 (GLB).
 #pragma once
 

@@ -1,5 +1,5 @@
 // Synthetic skinning and morphing workloads shared by tests/bench/bench_skin.cpp
-// and `m3g bench skin` (examples/cmd_bench.cpp): plain arrays, no M3G objects
+// and `m3g bench skin` (tools/m3g/cmd_bench.cpp): plain arrays, no M3G objects
 // (the large sizes exceed M3G's 65535 vertices per VertexArray).
 //
 // A skinned mesh is made the way an exporter writes M3G skins: vertices in

@@ -1,7 +1,7 @@
 // `m3g export`: an M3G scene graph as a glTF 2.0 document (node hierarchy,
 // meshes, materials and PNG textures, cameras, KHR_lights_punctual lights,
 // skins, morph targets, animations). The mapping and what it approximates
-// are described in docs/export.md. Part of the m3g tool (examples/), built
+// are described in docs/export.md. Part of the m3g tool (tools/m3g/), built
 // on the public API plus the keyframe sampler of scene/.
 #pragma once
 

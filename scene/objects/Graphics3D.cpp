@@ -8,7 +8,7 @@
 #include <string>
 
 #include "Check.h"
-#include "frame/FrameState.h"
+#include "FrameState.h"
 
 namespace m3g {
 

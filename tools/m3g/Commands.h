@@ -22,7 +22,7 @@ int cmdBenchRender(std::span<const std::string_view> args);
 int cmdBenchSoak(std::span<const std::string_view> args);
 /// m3g sample -o OUT.m3g: writes the project's sample scene.
 int cmdSample(std::span<const std::string_view> args);
-/// m3g view (examples/viewer/); without GLFW and ImGui at build time it
+/// m3g view (tools/m3g/viewer/); without GLFW and ImGui at build time it
 /// says what to install.
 int cmdView(std::span<const std::string_view> args);
 /// m3g export FILE -o OUT.glb|OUT.gltf [--time MS] [--lenient] [--separate-bin] [--quiet]
