@@ -13,8 +13,6 @@ namespace {
 
 /// Floats per vertex of each stream in a VertexMirror, in bytes.
 constexpr VkDeviceSize kStreamStrides[frame::STREAM_COUNT] = {12, 12, 16, 12, 12};
-/// Clamped, nearest, base level (frame::SamplerKey bits 0 and 1).
-constexpr frame::SamplerKey kNearestClamp = 3;
 
 }  // namespace
 
@@ -85,17 +83,23 @@ void Renderer::preparePrior() {
     prior_.pipelineKey = key.packed();
     prior_.pipeline = pipelines_->get(key);
     streams_->uniforms(u, prior_.uniforms, prior_.uniformOffset);
-    prior_.textures = resources_->textureSet(&target_.priorImage(), resources_->sampler(kNearestClamp), nullptr,
+    prior_.textures = resources_->textureSet(&target_.priorImage(), resources_->sampler(frame::kNearestClampSampler), nullptr,
                                              VK_NULL_HANDLE);
-    frame::Quad whole;  // the whole target, texture coordinates 0..1
-    VkDeviceSize offset = 0;
-    const VkBuffer quads = streams_->quad(whole, offset);
-    prior_.buffers = {quads, streams_->dummy(), streams_->dummy(), quads, streams_->dummy()};
-    prior_.offsets = {offset, 0, 0, offset + 3 * sizeof(float), 0};
-    prior_.strides = {6 * sizeof(float), 0, 0, 6 * sizeof(float), 0};
-    prior_.count = 6;
+    bindQuad(frame::Quad{}, prior_);  // the whole target, texture coordinates 0..1
     prior_.raster.cull = 0;
     prior_.raster.depthTest = prior_.raster.depthWrite = 0;
+}
+
+void Renderer::bindQuad(const frame::Quad& quad, PreparedDraw& p) {
+    // Six vertices of position xyz and texture coordinates st (+ pad): the
+    // position and first texture coordinate streams read the same buffer.
+    VkDeviceSize offset = 0;
+    const VkBuffer quads = streams_->quad(quad, offset);
+    p.buffers = {quads, streams_->dummy(), streams_->dummy(), quads, streams_->dummy()};
+    p.offsets = {offset, 0, 0, offset + 3 * sizeof(float), 0};
+    p.strides = {6 * sizeof(float), 0, 0, 6 * sizeof(float), 0};
+    p.indexBuffer = VK_NULL_HANDLE;
+    p.count = 6;
 }
 
 void Renderer::prepare(const frame::Draw& d, const frame::DrawList& list, frame::FrameSources& sources,
@@ -120,13 +124,7 @@ void Renderer::prepare(const frame::Draw& d, const frame::DrawList& list, frame:
     }
     p.textures = resources_->textureSet(images[0], samplers[0], images[1], samplers[1]);
     if (d.kind == frame::Draw::Kind::Quad) {
-        VkDeviceSize offset = 0;
-        const VkBuffer quads = streams_->quad(d.quad, offset);
-        p.buffers = {quads, streams_->dummy(), streams_->dummy(), quads, streams_->dummy()};
-        p.offsets = {offset, 0, 0, offset + 3 * sizeof(float), 0};
-        p.strides = {6 * sizeof(float), 0, 0, 6 * sizeof(float), 0};
-        p.indexBuffer = VK_NULL_HANDLE;
-        p.count = 6;
+        bindQuad(d.quad, p);
         return;
     }
     const VertexMirror& vm = resources_->vertices(d.vertices, sources);

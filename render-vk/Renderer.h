@@ -46,6 +46,8 @@ private:
                  PreparedDraw& out);
     /// The multisampled frame's prior-contents quad.
     void preparePrior();
+    /// The vertices of `quad` in the frame's quad memory, bound as `p`'s streams.
+    void bindQuad(const frame::Quad& quad, PreparedDraw& p);
 
     // ---- Record (vkCmd* only) ----
     /// Opens the command buffer and the target's images (FrameTarget::begin)

@@ -14,16 +14,15 @@ bool isGpu(frame::VertexSource s) {
 }
 
 VkSamplerCreateInfo samplerInfo(frame::SamplerKey key) {
-    const bool clampS = key & 1u, clampT = key & 2u, linear = key & 4u;
-    const std::uint32_t level = (key >> 3) & 3u;  // 0 base level, 1 nearest, 2 linear
+    const frame::LevelFilter level = frame::samplerLevel(key);
     VkSamplerCreateInfo si{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    si.magFilter = si.minFilter = linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
-    si.mipmapMode = level == 2 ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
-    si.addressModeU = clampS ? VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE : VK_SAMPLER_ADDRESS_MODE_REPEAT;
-    si.addressModeV = clampT ? VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE : VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    si.magFilter = si.minFilter = frame::samplerLinear(key) ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+    si.mipmapMode = level == frame::LevelFilter::Linear ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    si.addressModeU = frame::samplerClampsS(key) ? VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE : VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    si.addressModeV = frame::samplerClampsT(key) ? VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE : VK_SAMPLER_ADDRESS_MODE_REPEAT;
     si.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
     si.minLod = 0.0f;
-    si.maxLod = level == 0 ? 0.0f : VK_LOD_CLAMP_NONE;
+    si.maxLod = level == frame::LevelFilter::Base ? 0.0f : VK_LOD_CLAMP_NONE;
     return si;
 }
 
@@ -266,13 +265,15 @@ VkSampler ResourceCache::sampler(frame::SamplerKey key) {
 }
 
 VkDescriptorSet ResourceCache::textureSet(const Image* t0, VkSampler s0, const Image* t1, VkSampler s1) {
+    // The white texel: repeat, nearest, base level (the key 0).
+    constexpr frame::SamplerKey kWhite = frame::makeSampler(false, false, false, frame::LevelFilter::Base);
     if (!t0) {
         t0 = &white_;
-        s0 = sampler(0);
+        s0 = sampler(kWhite);
     }
     if (!t1) {
         t1 = &white_;
-        s1 = sampler(0);
+        s1 = sampler(kWhite);
     }
     const std::array<std::uint64_t, 4> key{reinterpret_cast<std::uint64_t>(t0->view), reinterpret_cast<std::uint64_t>(s0),
                                            reinterpret_cast<std::uint64_t>(t1->view), reinterpret_cast<std::uint64_t>(s1)};

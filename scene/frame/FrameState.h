@@ -20,6 +20,7 @@ struct FrameState {
     FrameBuilder builder;
     frame::DrawList list;       ///< the draws of the current render call
     frame::DrawList clearList;  ///< the current clear (render(World) prepares its draws first)
+    frame::ViewState view;      ///< the viewport of the draws in `list`
     /// The bound target's pixel adapter (one of them), set at bindTarget.
     std::optional<ImageTargetPixels> imagePixels;
     std::optional<GraphicsTargetPixels> graphicsPixels;

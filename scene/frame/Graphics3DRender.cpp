@@ -83,12 +83,13 @@ void Graphics3D::drawClear(const Background* background) {
 
 void Graphics3D::prepareQueue() {
     detail::FrameState& f = frame();
-    f.builder.build(f.queue, detail::viewState(*this), skinningMode_ == SKINNING_COMPUTE, f.backend->options(), f.list);
+    f.view = detail::viewState(*this);
+    f.builder.build(f.queue, f.view, skinningMode_ == SKINNING_COMPUTE, f.backend->options(), f.list);
 }
 
 void Graphics3D::drawPrepared() {
-    detail::FrameState& f = frame();
-    f.backend->draw(frameTarget(), detail::viewState(*this), f.list, f.builder);
+    detail::FrameState& f = *frame_;  // prepareQueue made it
+    f.backend->draw(frameTarget(), f.view, f.list, f.builder);
 }
 
 void Graphics3D::clear(Background* background) {

@@ -1,6 +1,7 @@
 #include "StateTranslation.h"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 
 #include <glm/glm.hpp>
@@ -41,8 +42,13 @@ void toColumns(const Transform& t, float* out) noexcept {
 }
 
 Transform vulkanProjection(const Transform& gl) {
-    const Transform fix = Transform::fromRows({1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 0.5f, 0.5f, 0, 0, 0, 1});
-    return fix * gl;
+    // frame::vulkanClipFix is the one definition of the fix (column major).
+    float columns[16];
+    frame::vulkanClipFix(columns);
+    std::array<float, 16> rows{};
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) rows[static_cast<std::size_t>(r * 4 + c)] = columns[c * 4 + r];
+    return Transform::fromRows(rows) * gl;
 }
 
 bool formatHasColor(int format) noexcept { return format != Image2D::ALPHA; }
@@ -63,16 +69,15 @@ std::int32_t shaderTexFunc(int blending) noexcept {
 }
 
 frame::SamplerKey samplerKey(int wrapS, int wrapT, int imageFilter, int levelFilter) noexcept {
-    const std::uint32_t level = levelFilter == Texture2D::FILTER_BASE_LEVEL ? 0 : levelFilter == Texture2D::FILTER_NEAREST ? 1 : 2;
-    return static_cast<std::uint32_t>(wrapS == Texture2D::WRAP_CLAMP) |
-           (static_cast<std::uint32_t>(wrapT == Texture2D::WRAP_CLAMP) << 1) |
-           (static_cast<std::uint32_t>(imageFilter == Texture2D::FILTER_LINEAR) << 2) | (level << 3);
+    using frame::LevelFilter;
+    const LevelFilter level = levelFilter == Texture2D::FILTER_BASE_LEVEL ? LevelFilter::Base
+                              : levelFilter == Texture2D::FILTER_NEAREST  ? LevelFilter::Nearest
+                                                                          : LevelFilter::Linear;
+    return frame::makeSampler(wrapS == Texture2D::WRAP_CLAMP, wrapT == Texture2D::WRAP_CLAMP,
+                              imageFilter == Texture2D::FILTER_LINEAR, level);
 }
 
-frame::SamplerKey nearestClampSampler() noexcept {
-    return samplerKey(Texture2D::WRAP_CLAMP, Texture2D::WRAP_CLAMP, Texture2D::FILTER_NEAREST,
-                      Texture2D::FILTER_BASE_LEVEL);
-}
+frame::SamplerKey nearestClampSampler() noexcept { return frame::kNearestClampSampler; }
 
 namespace {
 
@@ -161,7 +166,6 @@ void fillFog(DrawUniforms& u, const Fog* fog) noexcept {
 void translateSubmesh(const RenderQueue& queue, const RenderItem& item, const VertexLayout& layout,
                       const float* projection, const frame::DrawOptions& options, int numTextureUnits,
                       DrawUniforms& u, frame::Draw& draw) {
-    (void)queue;
     const VertexBuffer& vb = *item.vertices;
     const Appearance* app = item.appearance;
     std::memset(&u, 0, sizeof(u));

@@ -33,7 +33,20 @@ struct ViewState {
 /// Sampler state of a texture unit, packed: bit 0 S clamps, bit 1 T clamps,
 /// bit 2 linear image filter, bits 3-4 level filter (0 base level,
 /// 1 nearest, 2 linear). JSR-184 1.1, Texture2D.setWrapping / setFiltering.
+/// Made by makeSampler (scene) and read by the sampler* accessors (a back end).
 using SamplerKey = std::uint32_t;
+enum class LevelFilter : std::uint32_t { Base = 0, Nearest = 1, Linear = 2 };
+
+constexpr SamplerKey makeSampler(bool clampS, bool clampT, bool linear, LevelFilter level) noexcept {
+    return static_cast<SamplerKey>(clampS) | (static_cast<SamplerKey>(clampT) << 1) |
+           (static_cast<SamplerKey>(linear) << 2) | (static_cast<SamplerKey>(level) << 3);
+}
+constexpr bool samplerClampsS(SamplerKey k) noexcept { return (k & 1u) != 0; }
+constexpr bool samplerClampsT(SamplerKey k) noexcept { return (k & 2u) != 0; }
+constexpr bool samplerLinear(SamplerKey k) noexcept { return (k & 4u) != 0; }
+constexpr LevelFilter samplerLevel(SamplerKey k) noexcept { return static_cast<LevelFilter>((k >> 3) & 3u); }
+/// Clamped, nearest, base level: sprites, background images, the prior contents.
+inline constexpr SamplerKey kNearestClampSampler = makeSampler(true, true, false, LevelFilter::Base);
 
 /// An Image2D used as a texture. id 0: the unit is unused (a white texel).
 struct TextureRef {
