@@ -158,7 +158,7 @@ std::uint32_t Context::memoryType(std::uint32_t bits, VkMemoryPropertyFlags want
     throw VulkanError("m3g-vk: no suitable memory type");
 }
 
-Buffer Context::createHostBuffer(VkDeviceSize size, VkBufferUsageFlags usage) {
+Buffer Context::createHostBuffer(VkDeviceSize size, VkBufferUsageFlags usage, HostAccess access) {
     Buffer b;
     b.size = size;
     VkBufferCreateInfo bi{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
@@ -170,11 +170,10 @@ Buffer Context::createHostBuffer(VkDeviceSize size, VkBufferUsageFlags usage) {
     vkGetBufferMemoryRequirements(device_, b.buffer, &req);
     VkMemoryAllocateInfo ai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     ai.allocationSize = req.size;
-    // Device-local and host-visible when the device has it (lavapipe, ReBAR), else plain host memory.
-    ai.memoryTypeIndex = memoryType(req.memoryTypeBits,
-                                    VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT | VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
-                                        VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
-                                    VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+    constexpr VkMemoryPropertyFlags kHost = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    const VkMemoryPropertyFlags preferred = access == HostAccess::Read ? kHost | VK_MEMORY_PROPERTY_HOST_CACHED_BIT
+                                                                       : kHost | VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+    ai.memoryTypeIndex = memoryType(req.memoryTypeBits, preferred, kHost);
     VkResult r = vkAllocateMemory(device_, &ai, nullptr, &b.memory);
     if (r != VK_SUCCESS) {
         vkDestroyBuffer(device_, b.buffer, nullptr);

@@ -81,8 +81,16 @@ public:
     VkSampleCountFlagBits maxSamples() const noexcept { return maxSamples_; }
     bool validation() const noexcept { return validation_; }
 
-    /// Host-visible, coherent, persistently mapped buffer.
-    Buffer createHostBuffer(VkDeviceSize size, VkBufferUsageFlags usage);
+    /// What the host does with a host buffer's memory: writes it for the
+    /// device (uniforms, vertices, staging), or reads what the device wrote
+    /// (read-back).
+    enum class HostAccess { Write, Read };
+    /// Host-visible, coherent, persistently mapped buffer. Write: device-local
+    /// too where the device has such memory (lavapipe, resizable BAR), which
+    /// the device reads at full speed. Read: host-cached where the device has
+    /// it, since the CPU reads uncached device-local memory at a small
+    /// fraction of its speed (docs/gpu.md).
+    Buffer createHostBuffer(VkDeviceSize size, VkBufferUsageFlags usage, HostAccess access = HostAccess::Write);
     void destroy(Buffer& buffer) noexcept;
     /// Device-local 2D image with a view (colour or depth aspect by format).
     Image createImage(std::uint32_t width, std::uint32_t height, VkFormat format, VkImageUsageFlags usage,

@@ -68,7 +68,8 @@ void FrameTarget::ensureImages(std::uint32_t width, std::uint32_t height, VkSamp
                                     VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
     }
     transfer_ = ctx_.createHostBuffer(static_cast<VkDeviceSize>(width) * height * 4,
-                                      VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+                                      VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                      Context::HostAccess::Read);
     width_ = width;
     height_ = height;
 }

@@ -313,16 +313,24 @@ frame::Clear translateClear(const Background* background, const frame::ViewState
                      samplerKey(repeatX ? Texture2D::WRAP_REPEAT : Texture2D::WRAP_CLAMP,
                                 repeatY ? Texture2D::WRAP_REPEAT : Texture2D::WRAP_CLAMP, Texture2D::FILTER_NEAREST,
                                 Texture2D::FILTER_BASE_LEVEL)};
-    const float iw = static_cast<float>(image->getWidth()), ih = static_cast<float>(image->getHeight());
+    // Nearest sampling takes texel floor(crop + (pixel + 0.5) * crop size /
+    // viewport size), ties included (Nokia's renders repeat the texel after
+    // an edge that falls on a pixel centre). Where a pixel centre lies is a
+    // multiple of 1 / (2 * viewport) texels, so a shift of a quarter of that
+    // changes no other pixel, and makes a tie land on the texel after the
+    // edge on a GPU whose interpolation ends a hair below it (docs/gpu.md).
+    const double iw = image->getWidth(), ih = image->getHeight();
+    const double shiftS = 0.25 / std::max(view.viewport.w, 1), shiftT = 0.25 / std::max(view.viewport.h, 1);
+    const double s0 = background->getCropX() + shiftS, t0 = background->getCropY() + shiftT;
     d.quad = {-1.0f,
               -1.0f,
               1.0f,
               1.0f,
               0.0f,
-              static_cast<float>(background->getCropX()) / iw,
-              static_cast<float>(background->getCropY()) / ih,
-              static_cast<float>(background->getCropX() + background->getCropWidth()) / iw,
-              static_cast<float>(background->getCropY() + background->getCropHeight()) / ih};
+              static_cast<float>(s0 / iw),
+              static_cast<float>(t0 / ih),
+              static_cast<float>((s0 + background->getCropWidth()) / iw),
+              static_cast<float>((t0 + background->getCropHeight()) / ih)};
     return c;
 }
 

@@ -862,10 +862,14 @@ TEST(StateTranslation, ClearImageRepeatCoversAndRepeats) {
     EXPECT_EQ(uniforms[0].texEnv[0][3], 0);  // no BORDER discard
     EXPECT_EQ(c.image.pipeline.discard, 0);
     EXPECT_EQ(c.image.textures[0].sampler, 0u);  // repeat, nearest, base level
-    EXPECT_EQ(c.image.quad.s0, -0.5f);
-    EXPECT_EQ(c.image.quad.s1, 1.5f);
-    EXPECT_EQ(c.image.quad.t0, 0.5f);
-    EXPECT_EQ(c.image.quad.t1, 2.5f);
+    // The crop in texels over the image size, shifted by a quarter of the
+    // spacing of pixel centres (1 / (2 * 8) texels on an 8-pixel viewport)
+    // so ties fall on the texel after an edge on every device.
+    constexpr float shift = 0.25f / 8;
+    EXPECT_FLOAT_EQ(c.image.quad.s0, (-4 + shift) / 8);
+    EXPECT_FLOAT_EQ(c.image.quad.s1, (12 + shift) / 8);
+    EXPECT_FLOAT_EQ(c.image.quad.t0, (2 + shift) / 4);
+    EXPECT_FLOAT_EQ(c.image.quad.t1, (10 + shift) / 4);
 }
 
 TEST(StateTranslation, ClearImageBorderInsideCoversOutsideDiscards) {

@@ -103,6 +103,7 @@ int cmdBenchRender(std::span<const std::string_view> args) {
             std::printf("%-40s %7.0f %9.1f %9.2f %9.1f %8.2f %9.2f %6llu\n", name.c_str(), draws, first * 1e3, wall * 1e3,
                         1.0 / wall, cpu * 1e3, draws > 0 ? renderCpu / frames / draws * 1e6 : 0.0,
                         static_cast<unsigned long long>(after.pipelinesCreated - before.pipelinesCreated));
+            std::fflush(stdout);  // a run stopped by a time limit keeps the files measured
         } catch (const std::exception& e) {
             std::printf("%-40s error: %s\n", file.c_str(), e.what());
         }
