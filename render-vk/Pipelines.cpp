@@ -4,6 +4,8 @@
 #include <array>
 #include <vector>
 
+#include "PipelineCacheFile.h"
+
 #include "m3g_frag.h"  // generated from shaders/ by glslangValidator at build time
 #include "m3g_vert.h"
 
@@ -51,12 +53,40 @@ Pipelines::Pipelines(Context& ctx, std::size_t capacity) : ctx_(ctx), capacity_(
     check(vkCreatePipelineLayout(device, &pl, nullptr, &layout_), "vkCreatePipelineLayout");
     vert_ = createShaderModule(device, m3g_vert, sizeof(m3g_vert));
     frag_ = createShaderModule(device, m3g_frag, sizeof(m3g_frag));
+    cachePath_ = pipelineCachePath(ctx.properties());
+    const std::vector<std::uint8_t> seed = readPipelineCache(cachePath_, ctx.properties());
     VkPipelineCacheCreateInfo ci{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
-    check(vkCreatePipelineCache(device, &ci, nullptr, &cache_), "vkCreatePipelineCache");
+    ci.initialDataSize = seed.size();
+    ci.pInitialData = seed.empty() ? nullptr : seed.data();
+    if (vkCreatePipelineCache(device, &ci, nullptr, &cache_) != VK_SUCCESS) {
+        // A driver may refuse data it wrote itself once updated: start empty.
+        ci.initialDataSize = 0;
+        ci.pInitialData = nullptr;
+        check(vkCreatePipelineCache(device, &ci, nullptr, &cache_), "vkCreatePipelineCache");
+    }
+    ctx.pipelineCacheBytesLoaded += seed.size();
+}
+
+void Pipelines::saveCache() noexcept {
+    if (cachePath_.empty() || unsaved_ == 0) return;
+    std::size_t size = 0;
+    if (vkGetPipelineCacheData(ctx_.device(), cache_, &size, nullptr) != VK_SUCCESS || size == 0) return;
+    std::vector<std::uint8_t> data;
+    try {
+        data.resize(size);
+    } catch (...) {
+        return;
+    }
+    if (vkGetPipelineCacheData(ctx_.device(), cache_, &size, data.data()) != VK_SUCCESS) return;
+    data.resize(size);
+    if (writePipelineCache(cachePath_, data)) ++ctx_.pipelineCacheSaves;
+    unsaved_ = 0;
+    lastSave_ = std::chrono::steady_clock::now();
 }
 
 Pipelines::~Pipelines() {
     VkDevice device = ctx_.device();
+    saveCache();
     for (auto& [key, entry] : pipelines_) destroy(entry.pipeline);
     vkDestroyPipelineCache(device, cache_, nullptr);
     vkDestroyShaderModule(device, vert_, nullptr);
@@ -68,7 +98,10 @@ Pipelines::~Pipelines() {
 
 VkPipeline Pipelines::get(const PipelineKey& key) {
     auto it = pipelines_.find(key.packed());
-    if (it == pipelines_.end()) it = pipelines_.emplace(key.packed(), Entry{create(key), 0}).first;
+    if (it == pipelines_.end()) {
+        it = pipelines_.emplace(key.packed(), Entry{create(key), 0}).first;
+        ++unsaved_;
+    }
     it->second.lastFrame = frame_;
     return it->second.pipeline;
 }
@@ -104,6 +137,12 @@ void Pipelines::endFrame() {
             ++cacheResets_;
         }
     }
+    // New pipelines reach the file after the frame that made them (a
+    // one-frame `m3g render` process saves once), at most every 2 s while
+    // a viewer keeps meeting new states, and when the renderer goes.
+    if (unsaved_ > 0 && (lastSave_ == std::chrono::steady_clock::time_point{} ||
+                         std::chrono::steady_clock::now() - lastSave_ > std::chrono::seconds(2)))
+        saveCache();
     ++frame_;
 }
 

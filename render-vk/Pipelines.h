@@ -4,8 +4,10 @@
 // fixed-function state is uniform data or Vulkan 1.3 dynamic state.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <unordered_map>
 
 #include <m3g/frame/PipelineKey.h>
@@ -59,6 +61,9 @@ private:
     };
     VkPipeline create(const PipelineKey& key);
     void destroy(VkPipeline pipeline) noexcept;
+    /// Writes the VkPipelineCache to cachePath_ when pipelines were created
+    /// since the last save (PipelineCacheFile.h).
+    void saveCache() noexcept;
 
     Context& ctx_;
     std::size_t capacity_;
@@ -72,6 +77,10 @@ private:
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkShaderModule vert_ = VK_NULL_HANDLE, frag_ = VK_NULL_HANDLE;
     VkPipelineCache cache_ = VK_NULL_HANDLE;
+    /// The cache file (seeded from it at construction), "" for none.
+    std::string cachePath_;
+    std::size_t unsaved_ = 0;
+    std::chrono::steady_clock::time_point lastSave_{};
     std::unordered_map<std::uint64_t, Entry> pipelines_;
 };
 

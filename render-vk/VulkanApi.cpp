@@ -83,6 +83,8 @@ RenderStats renderStats() {
     s.liveBuffers = static_cast<std::uint64_t>(std::max<std::int64_t>(0, c.liveBuffers));
     s.liveTextures = static_cast<std::uint64_t>(std::max<std::int64_t>(0, c.liveTextures));
     s.deviceMemoryBytes = static_cast<std::uint64_t>(std::max<std::int64_t>(0, c.memoryBytes));
+    s.pipelineCacheBytesLoaded = c.pipelineCacheBytesLoaded;
+    s.pipelineCacheSaves = c.pipelineCacheSaves;
     return s;
 }
 

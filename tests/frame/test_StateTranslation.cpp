@@ -828,10 +828,13 @@ TEST(StateTranslation, ClearImageQuadMapsTheCropOntoTheViewport) {
     EXPECT_EQ(q.y0, -1.0f);
     EXPECT_EQ(q.x1, 1.0f);
     EXPECT_EQ(q.y1, 1.0f);
-    EXPECT_EQ(q.s0, 0.25f);
-    EXPECT_EQ(q.t0, 0.25f);
-    EXPECT_EQ(q.s1, 0.75f);
-    EXPECT_EQ(q.t1, 0.75f);
+    // Shifted by a quarter of the pixel-centre spacing, 1 / (2 * 8) texels:
+    // ties go to the texel after the edge on every device.
+    constexpr float shift = 0.25f / 8;
+    EXPECT_FLOAT_EQ(q.s0, (2 + shift) / 8);
+    EXPECT_FLOAT_EQ(q.t0, (1 + shift) / 4);
+    EXPECT_FLOAT_EQ(q.s1, (6 + shift) / 8);
+    EXPECT_FLOAT_EQ(q.t1, (3 + shift) / 4);
     ASSERT_EQ(uniforms.size(), 3u);
     EXPECT_EQ(c.image.uniforms, 2u);
     EXPECT_EQ(c.image.kind, Draw::Kind::Quad);

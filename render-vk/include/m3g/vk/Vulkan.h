@@ -99,6 +99,10 @@ struct RenderStats {
     std::uint64_t liveBuffers = 0;  ///< GPU mirrors of buffers alive now
     std::uint64_t liveTextures = 0; ///< GPU mirrors of images alive now
     std::uint64_t deviceMemoryBytes = 0;  ///< bytes allocated now
+    /// The pipeline cache file (docs/rendering.md "Pipeline cache"): bytes
+    /// of it renderers were seeded with, and how many times it was written.
+    std::uint64_t pipelineCacheBytesLoaded = 0;
+    std::uint64_t pipelineCacheSaves = 0;
 };
 RenderStats renderStats();
 
