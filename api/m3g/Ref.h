@@ -30,14 +30,23 @@ struct WeakControl {
 
 /// Base of every reference-counted M3G object. A new object starts with a
 /// count of zero; the first Ref<T> that takes it owns it.
+///
+/// Only an object made with `new` is freed by its count. One that lives on
+/// the stack, as a member, a static or in an array (`Graphics g(320, 240);
+/// g3d.bindTarget(&g);`) is never deleted when its last Ref goes: its owner
+/// destroys it, as C++ does for any such object. The class's operator new
+/// records each block it hands out, and the constructor claims the block it
+/// lies in (docs/porting.md, "Objects and ownership").
 class RefCounted {
 public:
     void addRef() const noexcept { refs_.fetch_add(1, std::memory_order_relaxed); }
     void release() const noexcept {
-        if (refs_.fetch_sub(1, std::memory_order_acq_rel) == 1) delete this;
+        if (refs_.fetch_sub(1, std::memory_order_acq_rel) == 1 && heap_) delete this;
     }
     /// Current number of strong references (diagnostics and tests).
     int getRefCount() const noexcept { return refs_.load(std::memory_order_relaxed); }
+    /// Whether this object was made with `new`, so its last Ref frees it.
+    bool isHeapAllocated() const noexcept { return heap_; }
 
     /// The weak control block of this object, created on first use.
     detail::WeakControl* weakControl() const {
@@ -48,10 +57,18 @@ public:
         return weak_;
     }
 
+    /// Allocation of every M3G object: records the block until the object's
+    /// constructor claims it (or, if construction fails, operator delete).
+    static void* operator new(std::size_t size);
+    static void operator delete(void* block) noexcept;
+    /// Blocks allocated on this thread whose object has not been constructed
+    /// yet (diagnostics and tests: 0 between statements).
+    static std::size_t pendingAllocations() noexcept;
+
 protected:
-    RefCounted() noexcept = default;
+    RefCounted() noexcept : heap_(claimAllocation(this)) {}
     // A copy is a new object: it starts unowned and with no weak observers.
-    RefCounted(const RefCounted&) noexcept {}
+    RefCounted(const RefCounted&) noexcept : heap_(claimAllocation(this)) {}
     RefCounted& operator=(const RefCounted&) noexcept { return *this; }
     virtual ~RefCounted() {
         if (weak_) {
@@ -61,8 +78,13 @@ protected:
     }
 
 private:
+    /// True when `self` lies in a block operator new handed out on this
+    /// thread and no object has claimed yet; the block is then claimed.
+    static bool claimAllocation(const void* self) noexcept;
+
     mutable std::atomic<int> refs_{0};
     mutable detail::WeakControl* weak_ = nullptr;
+    bool heap_ = false;
 };
 
 /// A strong, nullable reference. Converts implicitly from and to T* so that

@@ -23,6 +23,7 @@
 #include <m3g/MorphingMesh.h>
 #include <m3g/Node.h>
 #include <m3g/Object3D.h>
+#include <m3g/PngWriter.h>
 #include <m3g/PolygonMode.h>
 #include <m3g/RayIntersection.h>
 #include <m3g/Saver.h>
