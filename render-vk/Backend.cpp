@@ -17,6 +17,8 @@ std::unique_ptr<m3g::frame::FrameBackend> makeRenderer() { return std::make_uniq
 
 }  // namespace
 
+// Exported from libm3g.so too (a hidden-visibility build), where programs
+// name it to keep the library (cmake/SharedLibraries.cmake).
 extern "C" {
-int m3g_vk_backend_anchor = 0;
+M3G_FRAME_API int m3g_vk_backend_anchor = 0;
 }

@@ -1,6 +1,8 @@
 // javax.microedition.m3g.AnimationController (JSR-184 1.1, AnimationController).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <m3g/Object3D.h>
 
 namespace m3g {
@@ -8,7 +10,7 @@ namespace m3g {
 /// Maps world time to sequence time for the tracks that use it, and gives
 /// them an active interval and a blending weight:
 /// position(t) = refSequenceTime + speed * (t - refWorldTime).
-class AnimationController : public Object3D {
+class M3G_API AnimationController : public Object3D {
 public:
     /// Active interval [0, 0] (always active), speed 1, weight 1, reference
     /// point (world 0, sequence 0).

@@ -1,13 +1,15 @@
 // javax.microedition.m3g.AnimationTrack (JSR-184 1.1, AnimationTrack).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <m3g/Object3D.h>
 
 namespace m3g {
 
 /// Binds a KeyframeSequence to one animatable property of the object the
 /// track is attached to, under an AnimationController.
-class AnimationTrack : public Object3D {
+class M3G_API AnimationTrack : public Object3D {
 public:
     static constexpr int ALPHA = 256;
     static constexpr int AMBIENT_COLOR = 257;

@@ -1,6 +1,8 @@
 // javax.microedition.m3g.Appearance (JSR-184 1.1, Appearance).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <array>
 
 #include <m3g/Limits.h>
@@ -11,7 +13,7 @@ namespace m3g {
 /// The rendering attributes of a submesh or sprite: layer, compositing mode,
 /// fog, polygon mode, material and one texture per texture unit. A null
 /// component means its defaults (null Material: lighting off; null Fog: no fog).
-class Appearance : public Object3D {
+class M3G_API Appearance : public Object3D {
 public:
     Appearance();
     ~Appearance() override;

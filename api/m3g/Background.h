@@ -1,13 +1,15 @@
 // javax.microedition.m3g.Background (JSR-184 1.1, Background).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <m3g/Object3D.h>
 
 namespace m3g {
 
 /// How the viewport is cleared: color, optional image with crop and
 /// BORDER/REPEAT modes, color and depth clear enables.
-class Background : public Object3D {
+class M3G_API Background : public Object3D {
 public:
     static constexpr int BORDER = 32;
     static constexpr int REPEAT = 33;

@@ -1,6 +1,8 @@
 // javax.microedition.m3g.Camera (JSR-184 1.1, Camera).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <array>
 
 #include <m3g/Node.h>
@@ -9,7 +11,7 @@ namespace m3g {
 
 /// A camera node looking down its local -Z with +Y up. Projection matrices
 /// are OpenGL style (NDC z in [-1, 1]); the renderer adapts them to Vulkan.
-class Camera : public Node {
+class M3G_API Camera : public Node {
 public:
     static constexpr int GENERIC = 48;
     static constexpr int PARALLEL = 49;

@@ -1,13 +1,15 @@
 // javax.microedition.m3g.CompositingMode (JSR-184 1.1, CompositingMode).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <m3g/Object3D.h>
 
 namespace m3g {
 
 /// Per-fragment operations: alpha test, depth test/write, blending, color and
 /// alpha write masks, depth offset. Not animatable; no references.
-class CompositingMode : public Object3D {
+class M3G_API CompositingMode : public Object3D {
 public:
     static constexpr int ALPHA = 64;
     static constexpr int ALPHA_ADD = 65;

@@ -1,12 +1,14 @@
 // javax.microedition.m3g.Fog (JSR-184 1.1, Fog).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <m3g/Object3D.h>
 
 namespace m3g {
 
 /// Linear or exponential fog. No references.
-class Fog : public Object3D {
+class M3G_API Fog : public Object3D {
 public:
     static constexpr int EXPONENTIAL = 80;
     static constexpr int LINEAR = 81;

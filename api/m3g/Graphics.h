@@ -2,6 +2,8 @@
 // usual Graphics3D target of a MIDlet (JSR-184 1.1, Graphics3D.bindTarget).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -15,7 +17,7 @@ namespace m3g {
 /// lcdui notions Graphics3D uses: a translation and a clip rectangle (in
 /// translated coordinates). Graphics3D::bindTarget sets the default viewport
 /// from the clip; releaseTarget writes the rendered pixels here.
-class Graphics : public RefCounted {
+class M3G_API Graphics : public RefCounted {
 public:
     /// An opaque black surface; IAE unless width > 0 and height > 0.
     Graphics(int width, int height);

@@ -11,6 +11,8 @@
 // used by another thread while it renders them, read-only use included.
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <map>
 #include <memory>
 #include <string>
@@ -41,7 +43,7 @@ class FrameBackend;
 struct Target;
 }  // namespace frame
 
-class Graphics3D {
+class M3G_API Graphics3D {
 public:
     static constexpr int ANTIALIAS = 2;
     static constexpr int DITHER = 4;

@@ -1,13 +1,15 @@
 // javax.microedition.m3g.Group (JSR-184 1.1, Group).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <vector>
 
 #include <m3g/Node.h>
 
 namespace m3g {
 
-class Group : public Node {
+class M3G_API Group : public Node {
 public:
     Group();
     ~Group() override;

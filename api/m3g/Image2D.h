@@ -1,6 +1,8 @@
 // javax.microedition.m3g.Image2D (JSR-184 1.1, Image2D).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -14,7 +16,7 @@ namespace m3g {
 /// Immutable images are created from pixels or palette+indices; mutable ones
 /// start opaque white and are changed with set(). The Java constructor from an
 /// lcdui Image has no C++ counterpart.
-class Image2D : public Object3D {
+class M3G_API Image2D : public Object3D {
 public:
     static constexpr int ALPHA = 96;
     static constexpr int LUMINANCE = 97;

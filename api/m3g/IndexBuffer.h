@@ -1,6 +1,8 @@
 // javax.microedition.m3g.IndexBuffer (JSR-184 1.1, IndexBuffer).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <span>
 #include <vector>
 
@@ -10,7 +12,7 @@ namespace m3g {
 
 /// Abstract: the triangles of a submesh. Every subclass exposes them as a
 /// triangle list with consistent winding (what getIndices returns).
-class IndexBuffer : public Object3D {
+class M3G_API IndexBuffer : public Object3D {
 public:
     ~IndexBuffer() override;
 

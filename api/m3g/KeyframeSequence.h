@@ -1,6 +1,8 @@
 // javax.microedition.m3g.KeyframeSequence (JSR-184 1.1, KeyframeSequence).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <span>
 #include <vector>
 
@@ -10,7 +12,7 @@ namespace m3g {
 
 /// Keyframes (time, value) with an interpolation type, a duration, a repeat
 /// mode and a valid range. Sampled by the animation tracks that use it.
-class KeyframeSequence : public Object3D {
+class M3G_API KeyframeSequence : public Object3D {
 public:
     static constexpr int LINEAR = 176;
     static constexpr int SLERP = 177;

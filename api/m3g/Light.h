@@ -1,13 +1,15 @@
 // javax.microedition.m3g.Light (JSR-184 1.1, Light).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <m3g/Node.h>
 
 namespace m3g {
 
 /// A light source node. Directional and spot lights shine along their local
 /// -Z axis; omni and spot lights are positioned at their local origin.
-class Light : public Node {
+class M3G_API Light : public Node {
 public:
     static constexpr int AMBIENT = 128;
     static constexpr int DIRECTIONAL = 129;

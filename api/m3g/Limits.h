@@ -4,6 +4,8 @@
 // transforms per vertex, viewport size).
 #pragma once
 
+#include <m3g/Export.h>
+
 namespace m3g {
 
 /// Compile-time capacity; Limits::numTextureUnits may be configured up to this.
@@ -27,12 +29,12 @@ struct Limits {
 };
 
 /// The limits in force (handset-like defaults above).
-const Limits& getLimits() noexcept;
+M3G_API const Limits& getLimits() noexcept;
 
 /// Replaces the limits; IllegalArgumentException if a value is below the
 /// spec minimum (maxLights >= 8, viewport and texture sizes >= 256,
 /// maxTransformsPerVertex >= 2, numTextureUnits in [1, kMaxTextureUnits]).
 /// Objects created earlier keep what they validated against.
-void setLimits(const Limits& limits);
+M3G_API void setLimits(const Limits& limits);
 
 }  // namespace m3g

@@ -2,6 +2,8 @@
 // file format).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <cstdint>
 #include <span>
 #include <string>
@@ -76,7 +78,7 @@ struct LoadResult {
 /// - A value an object setter rejects (IAE, IOOBE, ISE, NPE) fails the load
 ///   with an IOException naming section, object index, type, byte offset and
 ///   the setter's message. Loads are all-or-nothing.
-class Loader {
+class M3G_API Loader {
 public:
     Loader() = delete;
 

@@ -2,13 +2,15 @@
 // equation in Light and Material).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <m3g/Object3D.h>
 
 namespace m3g {
 
 /// Lighting material: ambient, diffuse (with alpha), emissive and specular
 /// colors, shininess and vertex color tracking. No references.
-class Material : public Object3D {
+class M3G_API Material : public Object3D {
 public:
     static constexpr int AMBIENT = 1024;
     static constexpr int DIFFUSE = 2048;

@@ -1,6 +1,8 @@
 // javax.microedition.m3g.Mesh (JSR-184 1.1, Mesh).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <span>
 #include <vector>
 
@@ -14,7 +16,7 @@ namespace m3g {
 /// A VertexBuffer shared by one or more submeshes, each an IndexBuffer with
 /// an Appearance (a submesh with a null appearance is neither rendered nor
 /// picked).
-class Mesh : public Node {
+class M3G_API Mesh : public Node {
 public:
     /// One submesh. NPE if `vertices` or `submesh` is null; `appearance` may be null.
     Mesh(VertexBuffer* vertices, IndexBuffer* submesh, Appearance* appearance);

@@ -1,6 +1,8 @@
 // javax.microedition.m3g.MorphingMesh (JSR-184 1.1, MorphingMesh).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <span>
 #include <vector>
 
@@ -11,7 +13,7 @@ namespace m3g {
 /// A Mesh whose vertices are B + sum_i w_i (T_i - B) for a base buffer B and
 /// morph targets T_i. This class stores the targets and weights; the
 /// deformation itself is done by the renderer/kernels.
-class MorphingMesh : public Mesh {
+class M3G_API MorphingMesh : public Mesh {
 public:
     /// Mesh checks, then NPE if `targets` is null or has a null element and
     /// IAE if `targets` is empty. All weights start at 0.

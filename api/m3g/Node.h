@@ -1,6 +1,8 @@
 // javax.microedition.m3g.Node (JSR-184 1.1, Node).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <vector>
 
 #include <m3g/Transformable.h>
@@ -9,7 +11,7 @@ namespace m3g {
 
 /// A scene-graph node: rendering/picking enables, alpha factor, scope and
 /// alignment. Parents hold children strongly; the parent pointer is raw.
-class Node : public Transformable {
+class M3G_API Node : public Transformable {
 public:
     static constexpr int NONE = 144;
     static constexpr int ORIGIN = 145;

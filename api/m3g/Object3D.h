@@ -2,6 +2,8 @@
 // (JSR-184 1.1, Object3D).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <any>
 #include <cstdint>
 #include <map>
@@ -21,7 +23,7 @@ namespace m3g {
 /// Hashtable<Integer, byte[]>).
 using UserParameters = std::map<int, std::vector<std::uint8_t>>;
 
-class Object3D : public RefCounted {
+class M3G_API Object3D : public RefCounted {
 public:
     ~Object3D() override;
 

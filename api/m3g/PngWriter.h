@@ -4,6 +4,8 @@
 // (docs/library.md).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -16,10 +18,10 @@ class Image2D;
 /// LUMINANCE_ALPHA as grey + alpha, RGB as RGB, RGBA as RGBA, ALPHA as
 /// white with that alpha (RGBA). A palettised image is written with its
 /// palette resolved.
-std::vector<std::uint8_t> encodePng(const Image2D& image);
+M3G_API std::vector<std::uint8_t> encodePng(const Image2D& image);
 
 /// Writes encodePng(image) to `path`, replacing the file. IOException naming
 /// the path if it cannot be written.
-void writePng(const Image2D& image, const std::string& path);
+M3G_API void writePng(const Image2D& image, const std::string& path);
 
 }  // namespace m3g

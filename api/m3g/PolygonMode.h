@@ -1,6 +1,8 @@
 // javax.microedition.m3g.PolygonMode (JSR-184 1.1, PolygonMode).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <m3g/Object3D.h>
 
 namespace m3g {
@@ -8,7 +10,7 @@ namespace m3g {
 /// Polygon-level state: culling, shading, winding, two-sided lighting and the
 /// local-camera-lighting and perspective-correction hints. Not animatable; no
 /// references.
-class PolygonMode : public Object3D {
+class M3G_API PolygonMode : public Object3D {
 public:
     static constexpr int CULL_BACK = 160;
     static constexpr int CULL_FRONT = 161;

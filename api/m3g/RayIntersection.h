@@ -2,6 +2,8 @@
 // (JSR-184 1.1, RayIntersection and Group.pick).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <array>
 #include <span>
 
@@ -10,7 +12,7 @@
 
 namespace m3g {
 
-class RayIntersection {
+class M3G_API RayIntersection {
 public:
     /// No node, distance 0, submesh 0, texture coordinates 0, normal (0, 0, 1),
     /// ray origin (0, 0, 0) and direction (0, 0, 1).

@@ -7,6 +7,8 @@
 // otherwise form cycles, such as alignment references to an ancestor).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <atomic>
 #include <cstddef>
 #include <functional>
@@ -37,7 +39,7 @@ struct WeakControl {
 /// destroys it, as C++ does for any such object. The class's operator new
 /// records each block it hands out, and the constructor claims the block it
 /// lies in (docs/porting.md, "Objects and ownership").
-class RefCounted {
+class M3G_API RefCounted {
 public:
     void addRef() const noexcept { refs_.fetch_add(1, std::memory_order_relaxed); }
     void release() const noexcept {
@@ -91,7 +93,7 @@ private:
 /// ported Java code reads naturally: `Ref<Mesh> m = new Mesh(vb, ib, ap);
 /// group->addChild(m);`.
 template <class T>
-class Ref {
+class M3G_API Ref {
 public:
     Ref() noexcept = default;
     Ref(std::nullptr_t) noexcept {}
@@ -137,7 +139,7 @@ Ref<T> make(Args&&... args) {
 /// A weak reference: does not keep the object alive; get() becomes null once
 /// the object is destroyed.
 template <class T>
-class WeakRef {
+class M3G_API WeakRef {
 public:
     WeakRef() noexcept = default;
     WeakRef(T* p) { assign(p); }

@@ -2,6 +2,8 @@
 // JSR-184: the counterpart of Loader.
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <cstdint>
 #include <span>
 #include <string>
@@ -28,7 +30,7 @@ struct SaverOptions {
 /// are written; any other user object is not serialisable and is skipped.
 /// Mutable Image2Ds are written as mutable, without pixels (JSR-184 1.1 file
 /// format, section "Per-Class Data", Image2D).
-class Saver {
+class M3G_API Saver {
 public:
     Saver() = delete;
 

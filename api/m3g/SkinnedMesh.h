@@ -1,6 +1,8 @@
 // javax.microedition.m3g.SkinnedMesh (JSR-184 1.1, SkinnedMesh).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <memory>
 #include <span>
 #include <unordered_map>
@@ -25,7 +27,7 @@ namespace m3g {
 /// order of first use, its at-rest matrix (mesh space -> bone space) is
 /// captured at that first use, and the weights go into a skin::InfluenceTable
 /// with N = getLimits().maxTransformsPerVertex (value at construction).
-class SkinnedMesh : public Mesh {
+class M3G_API SkinnedMesh : public Mesh {
 public:
     /// Mesh checks, then NPE if `skeleton` is null and IAE if it already has
     /// a parent or is a World. On success the skeleton's parent is this mesh.

@@ -1,6 +1,8 @@
 // javax.microedition.m3g.Sprite3D (JSR-184 1.1, Sprite3D).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <m3g/Node.h>
 
 namespace m3g {
@@ -8,7 +10,7 @@ namespace m3g {
 /// A screen-aligned image drawn at the projected origin of the node, scaled
 /// (1x1 local units) or unscaled (crop size in pixels). Only the
 /// Appearance's CompositingMode and Fog (and its layer) are used.
-class Sprite3D : public Node {
+class M3G_API Sprite3D : public Node {
 public:
     /// NPE if image is null; appearance may be null (the sprite is then
     /// neither rendered nor picked). The crop is the whole image.

@@ -1,6 +1,8 @@
 // javax.microedition.m3g.Texture2D (JSR-184 1.1, Texture2D).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <m3g/Transformable.h>
 
 namespace m3g {
@@ -8,7 +10,7 @@ namespace m3g {
 /// A texture: an Image2D plus filtering, wrapping, blending function and
 /// blend color. Its Transformable part is the texture-coordinate transform and
 /// may be any (projective) matrix.
-class Texture2D : public Transformable {
+class M3G_API Texture2D : public Transformable {
 public:
     static constexpr int FILTER_BASE_LEVEL = 208;
     static constexpr int FILTER_LINEAR = 209;

@@ -1,6 +1,8 @@
 // javax.microedition.m3g.Transform: a generic 4x4 float matrix (JSR-184 1.1, Transform).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <array>
 #include <span>
 
@@ -13,7 +15,7 @@ namespace m3g {
 /// (element index = row*4 + col). `postX` multiplies from the right: M = M X.
 /// A value type (not an Object3D): pass by pointer where Java passes a
 /// Transform reference that may be null.
-class Transform {
+class M3G_API Transform {
 public:
     /// Identity.
     Transform() noexcept;

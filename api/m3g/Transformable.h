@@ -1,6 +1,8 @@
 // javax.microedition.m3g.Transformable (JSR-184 1.1, Transformable).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <array>
 #include <span>
 
@@ -11,7 +13,7 @@ namespace m3g {
 
 /// Translation T, orientation R (unit quaternion), scale S and a generic
 /// matrix M, composed as C = T R S M.
-class Transformable : public Object3D {
+class M3G_API Transformable : public Object3D {
 public:
     /// R = rotation of `angle` degrees about (ax, ay, az); IAE if the axis is
     /// zero and angle != 0. The axis need not be unit length.

@@ -1,6 +1,8 @@
 // javax.microedition.m3g.TriangleStripArray (JSR-184 1.1, TriangleStripArray).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <span>
 #include <vector>
 
@@ -15,7 +17,7 @@ namespace m3g {
 /// odd j (2nd and 3rd index swapped, so that every triangle has the winding
 /// of the first one), strips one after the other. Degenerate triangles
 /// (repeated indices) are kept, so getIndexCount() = 3 * sum(length - 2).
-class TriangleStripArray : public IndexBuffer {
+class M3G_API TriangleStripArray : public IndexBuffer {
 public:
     /// Implicit indices: strip k uses the next stripLengths[k] indices,
     /// counting from firstIndex. NPE if stripLengths is null; IAE if it is

@@ -2,6 +2,8 @@
 // Transform.transform(VertexArray, float[], boolean)).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -13,7 +15,7 @@ namespace m3g {
 /// An array of integer vectors (2 to 4 signed byte or short components per
 /// vertex). The values are raw integers; scale, bias and normalisation are
 /// applied by the VertexBuffer that uses the array.
-class VertexArray : public Object3D {
+class M3G_API VertexArray : public Object3D {
 public:
     /// IAE unless 1 <= numVertices <= 65535, 2 <= numComponents <= 4 and
     /// componentSize is 1 (byte) or 2 (short). All components start at 0.

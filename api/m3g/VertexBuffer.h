@@ -1,6 +1,8 @@
 // javax.microedition.m3g.VertexBuffer (JSR-184 1.1, VertexBuffer).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <array>
 #include <cstdint>
 #include <span>
@@ -19,7 +21,7 @@ namespace m3g {
 /// Setting an array whose count differs from that of the *other* arrays
 /// throws IAE (replacing the only array may change the count); removing every
 /// array resets the count to 0.
-class VertexBuffer : public Object3D {
+class M3G_API VertexBuffer : public Object3D {
 public:
     /// No arrays, default color 0xFFFFFFFF, vertex count 0.
     VertexBuffer();

@@ -1,6 +1,8 @@
 // javax.microedition.m3g.World (JSR-184 1.1, World).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <m3g/Background.h>
 #include <m3g/Camera.h>
 #include <m3g/Group.h>
@@ -9,7 +11,7 @@ namespace m3g {
 
 /// The root of a scene: a Group with an active camera and a background. A
 /// World can never be a child of another node.
-class World : public Group {
+class M3G_API World : public Group {
 public:
     World();
     ~World() override;

@@ -37,6 +37,32 @@ fi
 "$tool" render "$work/sample.m3g" -o "$work/reference-320.png" --size 320x240 >/dev/null
 "$tool" compare "$work/docs-program.png" "$work/reference-320.png" --threshold 2 --max-share 0
 
+if [ -n "$(find "$prefix" -name 'libm3g.so*' -print -quit)" ]; then
+  echo "== shared libraries: sonames and exported symbols"
+  lib="$(dirname "$(find "$prefix" -name 'libm3g.so' | head -1)")"
+  # Output captured first: `objdump | grep -q` fails under pipefail when
+  # grep stops reading early.
+  for so in libm3g libm3g_scene; do
+    headers="$(objdump -p "$lib/$so.so")"
+    grep -q "SONAME *$so.so.0$" <<<"$headers" || { echo "$so.so has no SONAME $so.so.0" >&2; exit 1; }
+  done
+  for so in libm3g.so libm3g_scene.so; do
+    exported="$(nm -D -C --defined-only "$lib/$so")"
+    grep -q "m3g::Graphics3D::getInstance()" <<<"$exported" || { echo "$so does not export Graphics3D::getInstance" >&2; exit 1; }
+    internals="MeshDeformer\|KeyframeSampler\|m3g::detail::\|m3g::vk::Renderer\|m3g::vk::Context"
+    if grep -q "$internals" <<<"$exported"; then
+      echo "$so exports internals:" >&2
+      grep "$internals" <<<"$exported" | head >&2
+      exit 1
+    fi
+    echo "   $so exports $(grep -c " m3g::" <<<"$exported") m3g:: symbols and no internals"
+  done
+  # One library: libm3g.so alone (scene's state must exist once).
+  needed="$(objdump -p "$work/render/render_check" | awk '/NEEDED/ {print $2}' | grep m3g | tr '\n' ' ')"
+  [ "$needed" = "libm3g.so.0 " ] || { echo "render_check needs [$needed], not libm3g.so.0 alone" >&2; exit 1; }
+  export LD_LIBRARY_PATH="$lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+fi
+
 echo "== 2. pkg-config m3g"
 pcdir="$(dirname "$(find "$prefix" -name m3g.pc | head -1)")"
 flags="$(PKG_CONFIG_PATH="$pcdir" pkg-config --cflags --libs m3g)"

@@ -4,6 +4,8 @@
 // is the Vulkan back end; scene's NullBackend records the calls for tests.
 #pragma once
 
+#include <m3g/frame/Export.h>
+
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -65,7 +67,7 @@ public:
 /// installs its factory (render-vk does at load time); scene falls back to
 /// NullBackend, which draws nothing.
 using BackendFactory = std::unique_ptr<FrameBackend> (*)();
-void setBackendFactory(BackendFactory factory) noexcept;
-BackendFactory backendFactory() noexcept;
+M3G_FRAME_API void setBackendFactory(BackendFactory factory) noexcept;
+M3G_FRAME_API BackendFactory backendFactory() noexcept;
 
 }  // namespace m3g::frame

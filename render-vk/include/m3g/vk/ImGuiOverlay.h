@@ -4,6 +4,8 @@
 // with WindowTarget::setOverlay. Library m3g_vk_imgui.
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <cstdint>
 #include <memory>
 
@@ -15,7 +17,7 @@ class Image2D;
 
 namespace m3g::vk {
 
-class ImGuiOverlay final : public WindowOverlay {
+class M3G_API ImGuiOverlay final : public WindowOverlay {
 public:
     /// Uses the current ImGui context (ISE if none): builds and uploads its
     /// font atlas now (call again uploadFonts() after changing fonts).

@@ -13,6 +13,8 @@
 //                      16-bit one, as Nokia's engine had (docs/rendering.md).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -24,7 +26,7 @@ namespace m3g::vk {
 /// Thrown when Vulkan cannot be used at all (no loader, no ICD, no device,
 /// device creation failed) or a Vulkan call fails. The message says what
 /// failed and what to install.
-class VulkanError : public IllegalStateException {
+class M3G_API VulkanError : public IllegalStateException {
 public:
     using IllegalStateException::IllegalStateException;
 };
@@ -39,24 +41,24 @@ struct DeviceInfo {
 
 /// Every physical device the loader reports (creates a bare instance;
 /// throws VulkanError when there is no loader).
-std::vector<DeviceInfo> listDevices();
+M3G_API std::vector<DeviceInfo> listDevices();
 
 /// The device Graphics3D renders with (creates it if needed).
-DeviceInfo currentDevice();
+M3G_API DeviceInfo currentDevice();
 
 /// Turns the validation layer on or off; only before the device exists
 /// (overrides M3G_VK_VALIDATION). Returns false if too late.
-bool requestValidation(bool enable);
+M3G_API bool requestValidation(bool enable);
 /// Instance extensions a windowed application needs (e.g. from
 /// glfwGetRequiredInstanceExtensions); enables VK_KHR_swapchain on the
 /// device. Only before the device exists; returns false if too late.
-bool requestWindowExtensions(const std::vector<std::string>& instanceExtensions);
+M3G_API bool requestWindowExtensions(const std::vector<std::string>& instanceExtensions);
 /// Whether the device was created with the validation layer.
-bool validationEnabled();
+M3G_API bool validationEnabled();
 /// Messages (warnings and errors) the validation layer has reported so far.
-std::uint64_t validationMessageCount();
+M3G_API std::uint64_t validationMessageCount();
 /// The last validation message, or "" (for test failure output).
-std::string lastValidationMessage();
+M3G_API std::string lastValidationMessage();
 
 /// Diagnostic drawing for viewers (an m3g-vk extension, off by default):
 /// applies to every Graphics3D from the next draw on.
@@ -64,8 +66,8 @@ struct DebugView {
     bool wireframe = false;  ///< meshes as triangle edges (when the device has fillModeNonSolid)
     bool unlit = false;      ///< lighting off: Material ignored, vertex colours or white
 };
-void setDebugView(const DebugView& view) noexcept;
-DebugView debugView() noexcept;
+M3G_API void setDebugView(const DebugView& view) noexcept;
+M3G_API DebugView debugView() noexcept;
 
 /// Whether lit vertex colours are clamped to [0, 1] before they are
 /// interpolated (applies to every Graphics3D from the next frame on).
@@ -78,8 +80,8 @@ DebugView debugView() noexcept;
 /// is clamped per vertex as the OpenGL ES 1.1 specification describes
 /// (JSR-184 1.1, Light and Material, via GL ES lighting). Environment variable
 /// M3G_CLAMP_LIGHTING=1 turns it on at start-up.
-void setLitColorClamping(bool clamp) noexcept;
-bool litColorClamping() noexcept;
+M3G_API void setLitColorClamping(bool clamp) noexcept;
+M3G_API bool litColorClamping() noexcept;
 
 /// Counters since the device was created.
 struct RenderStats {
@@ -104,6 +106,6 @@ struct RenderStats {
     std::uint64_t pipelineCacheBytesLoaded = 0;
     std::uint64_t pipelineCacheSaves = 0;
 };
-RenderStats renderStats();
+M3G_API RenderStats renderStats();
 
 }  // namespace m3g::vk

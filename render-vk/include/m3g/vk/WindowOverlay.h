@@ -4,11 +4,13 @@
 // them, e.g. ImGuiOverlay.
 #pragma once
 
+#include <m3g/Export.h>
+
 namespace m3g::vk {
 
 class Swapchain;
 
-class WindowOverlay {
+class M3G_API WindowOverlay {
 public:
     virtual ~WindowOverlay() = default;
     /// Records the overlay into `cmd` (a VkCommandBuffer, as a pointer): the

@@ -10,6 +10,8 @@
 // (requestReadback, for screenshots).
 #pragma once
 
+#include <m3g/Export.h>
+
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -21,7 +23,7 @@ namespace m3g::vk {
 class Swapchain;
 class WindowOverlay;
 
-class WindowTarget : public Graphics {
+class M3G_API WindowTarget : public Graphics {
 public:
     /// Creates a window surface: called once with the VkInstance (as a
     /// pointer) when the device exists; returns the VkSurfaceKHR (as an
