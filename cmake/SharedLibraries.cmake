@@ -10,6 +10,7 @@
 # program may reach is left out. Only M3G_API symbols are exported (hidden
 # visibility, set in the top CMakeLists.txt).
 find_package(PNG REQUIRED)
+find_package(JPEG REQUIRED)
 find_package(ZLIB REQUIRED)
 find_package(Threads REQUIRED)
 set(M3G_SHARED_STUB ${CMAKE_BINARY_DIR}/generated/m3g_shared_stub.cpp)
@@ -19,7 +20,7 @@ add_library(m3g_scene_shared SHARED ${M3G_SHARED_STUB})
 add_dependencies(m3g_scene_shared m3g_scene m3g_skin)
 target_link_libraries(m3g_scene_shared
   PRIVATE -Wl,--whole-archive $<TARGET_FILE:m3g_scene> $<TARGET_FILE:m3g_skin> -Wl,--no-whole-archive
-          PNG::PNG ZLIB::ZLIB
+          PNG::PNG JPEG::JPEG ZLIB::ZLIB
   PUBLIC Threads::Threads)
 target_include_directories(m3g_scene_shared INTERFACE
   $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/api> $<BUILD_INTERFACE:${CMAKE_BINARY_DIR}/generated>
@@ -36,7 +37,7 @@ if(M3G_VULKAN)
   add_dependencies(m3g_shared m3g_render_vk volk_static m3g_scene m3g_skin)
   target_link_libraries(m3g_shared
     PRIVATE -Wl,--whole-archive $<TARGET_FILE:m3g_render_vk> $<TARGET_FILE:m3g_scene> $<TARGET_FILE:m3g_skin>
-            -Wl,--no-whole-archive $<TARGET_FILE:volk_static> PNG::PNG ZLIB::ZLIB ${CMAKE_DL_LIBS}
+            -Wl,--no-whole-archive $<TARGET_FILE:volk_static> PNG::PNG JPEG::JPEG ZLIB::ZLIB ${CMAKE_DL_LIBS}
     PUBLIC Threads::Threads)
   target_include_directories(m3g_shared INTERFACE
     $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/api> $<BUILD_INTERFACE:${CMAKE_BINARY_DIR}/generated>

@@ -30,10 +30,10 @@ struct LoadResult {
     std::vector<Ref<Object3D>> roots;
     /// Every loaded object in file order (the header excluded). An external
     /// reference contributes the object it loaded (the first root of a nested
-    /// .m3g, or the Image2D of a PNG); one skipped by a lenient load
-    /// contributes nothing. A PNG input gives its one Image2D.
+    /// .m3g, or the Image2D of a PNG or JPEG); one skipped by a lenient load
+    /// contributes nothing. A PNG or JPEG input gives its one Image2D.
     std::vector<Ref<Object3D>> objects;
-    /// Header fields of the .m3g file (0 / false / empty for a PNG input).
+    /// Header fields of the .m3g file (0 / false / empty for an image input).
     int versionMajor = 0;
     int versionMinor = 0;
     bool hasExternalReferences = false;
@@ -46,7 +46,19 @@ struct LoadResult {
     std::vector<std::string> warnings;
 };
 
-/// Reads .m3g files (and PNG images) into object graphs. Static only.
+/// Reads .m3g files (and PNG and JPEG images) into object graphs. Static only.
+///
+/// Images (JSR-184 1.1, Loader: PNG is the image format every implementation
+/// must read; JPEG is read too, as Nokia's M3G implementation (reference) did
+/// where the handset's platform decoder did). Either, loaded on its own or
+/// through an external reference, is one immutable Image2D:
+/// - PNG: grey -> LUMINANCE; grey+alpha or grey+tRNS -> LUMINANCE_ALPHA;
+///   RGB or palette -> RGB; RGB+tRNS, palette+tRNS or RGBA -> RGBA.
+/// - JPEG (baseline or progressive): greyscale -> LUMINANCE, colour -> RGB;
+///   CMYK files fail. Damaged data (a file cut short, a bad Huffman code)
+///   fails rather than loading with the grey or guessed pixels a decoder
+///   would fill in.
+/// - Either fails over 16384 pixels a side or 256 MiB of pixels.
 ///
 /// Decoding notes (JSR-184 1.1 file format, section "Per-Class Data", and where
 /// Nokia's M3G implementation (reference) reads a field otherwise):
@@ -65,8 +77,9 @@ struct LoadResult {
 ///   as a reference when the roots are chosen (alignment references,
 ///   skeletons, bones, morph targets and animation tracks included).
 /// - External references: relative URIs resolve against the referencing
-///   file's folder; a nested .m3g gives its first root object, a PNG an
-///   immutable Image2D; loops fail, naming the chain of files.
+///   file's folder; a nested .m3g gives its first root object, a PNG or JPEG
+///   an immutable Image2D; loops fail, naming the chain of files. The file's
+///   contents, not its name, tell which it is.
 /// - Lenient loads skip an external reference whose file is missing: every
 ///   ObjectIndex to it reads as null. Slots that accept null take it; list
 ///   entries (Group children, SkinnedMesh bones, animation tracks) are left

@@ -83,6 +83,7 @@ void requireLoadableFormat(InputFormat f, const std::string& name) {
     switch (f) {
         case InputFormat::M3G:
         case InputFormat::PNG:
+        case InputFormat::JPEG:
             return;
         case InputFormat::Empty:
             throw IOException(prefix + "empty file (0 bytes): not an M3G file");
@@ -92,8 +93,6 @@ void requireLoadableFormat(InputFormat f, const std::string& name) {
             throw IOException(prefix +
                               "the M3G file identifier is damaged at bytes 8-11 (line endings converted, e.g. by a "
                               "text-mode transfer): not a valid M3G file");
-        case InputFormat::JPEG:
-            throw IOException(prefix + "this is a JPEG image, not an M3G file (only PNG images can be loaded)");
         case InputFormat::MascotMBAC:
         case InputFormat::MascotMTRA:
             throw IOException(prefix + "this is " + describeFormat(f) +
@@ -105,7 +104,8 @@ void requireLoadableFormat(InputFormat f, const std::string& name) {
         case InputFormat::Unknown:
             break;
     }
-    throw IOException(prefix + "not an M3G file or PNG image (unrecognised file identifier at byte offset 0)");
+    throw IOException(prefix +
+                      "not an M3G file or a PNG or JPEG image (unrecognised file identifier at byte offset 0)");
 }
 
 }  // namespace m3g::detail

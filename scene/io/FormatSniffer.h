@@ -32,7 +32,7 @@ InputFormat sniffFormat(std::span<const std::uint8_t> data);
 const char* describeFormat(InputFormat format);
 
 /// Throws IOException with a clear message unless `format` is one the loader
-/// reads (M3G 1.0 or PNG). `name` (may be empty) is the resource name.
+/// reads (M3G 1.0, PNG or JPEG). `name` (may be empty) is the resource name.
 void requireLoadableFormat(InputFormat format, const std::string& name = {});
 
 }  // namespace m3g::detail

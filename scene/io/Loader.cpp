@@ -15,6 +15,7 @@
 
 #include "Check.h"
 #include "FormatSniffer.h"
+#include "JpegImage.h"
 #include "LoadOptions.h"
 #include "M3GSections.h"
 #include "ObjectDecoder.h"
@@ -170,10 +171,17 @@ Ref<Object3D> loadExternal(const std::string& uri, const detail::ByteReader& rea
     return nested.roots.front();
 }
 
-LoadResult loadPng(std::span<const std::uint8_t> data, const std::string& name) {
-    detail::PngImage png = detail::decodePng(data, name.empty() ? std::string("PNG image") : name);
+/// A PNG or JPEG input: one immutable Image2D (JSR-184 1.1, Loader). PNG is
+/// the image format the specification requires; JPEG is read because Nokia's
+/// implementation read it where the handset's platform decoder did.
+LoadResult loadImage(detail::InputFormat format, std::span<const std::uint8_t> data, const std::string& name) {
+    const detail::DecodedImage decoded =
+        format == detail::InputFormat::JPEG
+            ? detail::decodeJpeg(data, name.empty() ? std::string("JPEG image") : name)
+            : detail::decodePng(data, name.empty() ? std::string("PNG image") : name);
     LoadResult r;
-    Ref<Image2D> img = make<Image2D>(png.format, png.width, png.height, std::span<const std::uint8_t>(png.pixels));
+    Ref<Image2D> img =
+        make<Image2D>(decoded.format, decoded.width, decoded.height, std::span<const std::uint8_t>(decoded.pixels));
     r.objects.push_back(img);
     r.roots.push_back(img);
     return r;
@@ -182,7 +190,8 @@ LoadResult loadPng(std::span<const std::uint8_t> data, const std::string& name) 
 LoadResult loadData(std::span<const std::uint8_t> data, const std::string& name,
                     const std::optional<fs::path>& baseDir, Session& session, bool nested) {
     const detail::InputFormat format = detail::sniffFormat(data);
-    if (format == detail::InputFormat::PNG) return loadPng(data, name);
+    if (format == detail::InputFormat::PNG || format == detail::InputFormat::JPEG)
+        return loadImage(format, data, name);
     detail::requireLoadableFormat(format, name);
 
     detail::LoadLog log;

@@ -92,7 +92,7 @@ ChunkScan scanChunks(std::span<const std::uint8_t> d) {
 // Only trivially destructible locals: libpng may longjmp back here.
 bool readHeader(png_structp png, png_infop info, PngInfo* out) {
     if (setjmp(png_jmpbuf(png))) return false;
-    png_set_user_limits(png, kPngMaxDimension, kPngMaxDimension);
+    png_set_user_limits(png, kImageMaxDimension, kImageMaxDimension);
     png_read_info(png, info);
     const png_uint_32 w = png_get_image_width(png, info);
     const png_uint_32 h = png_get_image_height(png, info);
@@ -163,9 +163,9 @@ PngImage decodePng(std::span<const std::uint8_t> data, const std::string& contex
         fail(str("unexpected PNG layout after conversion (", pi.channels, " channels, ", pi.rowBytes,
                  " bytes per row)"));
     const std::uint64_t total = std::uint64_t(pi.rowBytes) * pi.height;
-    if (total > kPngMaxDecodedBytes)
+    if (total > kImageMaxDecodedBytes)
         fail(str("PNG image ", pi.width, "x", pi.height, " is too large (", total, " bytes decoded; limit ",
-                 kPngMaxDecodedBytes, ")"));
+                 kImageMaxDecodedBytes, ")"));
 
     const std::uint64_t rawTotal = (std::uint64_t(pi.rawRowBytes) + 1) * pi.height;
     const std::uint64_t idat = chunks.idatBytes;

@@ -13,25 +13,16 @@
 #include <cstdint>
 #include <span>
 #include <string>
-#include <vector>
+
+#include "DecodedImage.h"
 
 namespace m3g::detail {
 
-struct PngImage {
-    int format = 0;  ///< Image2D::LUMINANCE, LUMINANCE_ALPHA, RGB or RGBA
-    int width = 0;
-    int height = 0;
-    /// Rows top to bottom, tightly packed, Image2D::bytesPerPixel(format) bytes per pixel.
-    std::vector<std::uint8_t> pixels;
-};
-
-/// Largest width or height accepted, and largest decoded size in bytes.
-inline constexpr std::uint32_t kPngMaxDimension = 16384;
-inline constexpr std::uint64_t kPngMaxDecodedBytes = 256ull << 20;
+using PngImage = DecodedImage;
 
 /// Decodes a whole PNG file. Throws IOException naming `context` (e.g. the
 /// file name) and the reason on any error (bad signature, truncation, CRC or
-/// zlib errors, oversized image).
+/// zlib errors, an image over the limits of DecodedImage.h).
 PngImage decodePng(std::span<const std::uint8_t> data, const std::string& context = "PNG image");
 
 }  // namespace m3g::detail

@@ -56,8 +56,11 @@ TEST(FormatSniffer, Empty) {
 TEST(FormatSniffer, ImagesAndArchives) {
     EXPECT_EQ(sniffFormat(Bytes{0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A, 0, 0, 0, 13}), InputFormat::PNG);
     EXPECT_NO_THROW(requireLoadableFormat(InputFormat::PNG));
+    // JPEG: SOI (FF D8) and the first byte of the next marker.
     EXPECT_EQ(sniffFormat(Bytes{0xFF, 0xD8, 0xFF, 0xE0, 0, 0x10, 'J', 'F', 'I', 'F'}), InputFormat::JPEG);
-    EXPECT_NE(rejection(InputFormat::JPEG).find("this is a JPEG image, not an M3G file"), std::string::npos);
+    EXPECT_EQ(sniffFormat(Bytes{0xFF, 0xD8, 0xFF}), InputFormat::JPEG);
+    EXPECT_EQ(sniffFormat(Bytes{0xFF, 0xD8, 0x00}), InputFormat::Unknown);
+    EXPECT_NO_THROW(requireLoadableFormat(InputFormat::JPEG));
     EXPECT_EQ(sniffFormat(Bytes{'P', 'K', 3, 4, 20, 0}), InputFormat::Zip);
     EXPECT_EQ(sniffFormat(Bytes{0x1F, 0x8B, 8, 0}), InputFormat::Gzip);
     const std::string xml = "\n  <?xml version=\"1.0\"?><m3g/>";
@@ -87,7 +90,8 @@ TEST(FormatSniffer, TextModeDamage) {
 TEST(FormatSniffer, Unknown) {
     EXPECT_EQ(sniffFormat(Bytes{'h', 'e', 'l', 'l', 'o'}), InputFormat::Unknown);
     EXPECT_EQ(sniffFormat(Bytes{0}), InputFormat::Unknown);
-    EXPECT_NE(rejection(InputFormat::Unknown).find("not an M3G file"), std::string::npos);
+    EXPECT_NE(rejection(InputFormat::Unknown, "x.bin").find("x.bin: not an M3G file or a PNG or JPEG image"),
+              std::string::npos);
 }
 
 TEST(FormatSniffer, CorpusFilesAreM3GOrPng) {

@@ -5,6 +5,7 @@
 
 #include <any>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -37,6 +38,7 @@
 #include <m3g/VertexBuffer.h>
 #include <m3g/World.h>
 
+#include "JpegTestBytes.h"
 #include "LoaderTestObjects.h"
 
 using namespace m3g;
@@ -113,12 +115,20 @@ TEST(Loader, JavaEntryPointArgumentChecks) {
 }
 
 TEST(Loader, NonM3GInputsAreNamed) {
+    // The start of a JPEG file goes to the JPEG decoder, which finds it cut short.
     const Bytes jpeg = {0xFF, 0xD8, 0xFF, 0xE0, 0, 16, 'J', 'F', 'I', 'F', 0};
     try {
         Loader::load(std::span<const std::uint8_t>(jpeg), 0);
         ADD_FAILURE();
     } catch (const IOException& e) {
-        EXPECT_NE(std::string(e.what()).find("JPEG"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("JPEG image: invalid JPEG: "), std::string::npos) << e.what();
+    }
+    const Bytes mascot = {'M', 'B', 5, 0, 1, 2, 1, 1, 10, 0};
+    try {
+        Loader::load(std::span<const std::uint8_t>(mascot), 0);
+        ADD_FAILURE();
+    } catch (const IOException& e) {
+        EXPECT_NE(std::string(e.what()).find("Mascot Capsule"), std::string::npos) << e.what();
     }
     EXPECT_THROW(Loader::load("/nonexistent/dir/file.m3g"), IOException);
 }
@@ -931,6 +941,167 @@ TEST(Loader, ExternalReferenceLoopIsDetected) {
     }
     writeBytes(dir.path / "self.m3g", fileWithExternal({"self.m3g"}, {}));
     EXPECT_THROW(Loader::load((dir.path / "self.m3g").string()), IOException);
+}
+
+// ---- JPEG images -------------------------------------------------------------
+
+namespace {
+
+// JPEG is lossy: decoded samples are compared with the encoded ones within
+// the tolerance test_JpegImage.cpp derives for quality 100 (4 levels).
+constexpr int kJpegTolerance = 4;
+
+Bytes jpegBytes(int w, int h, int components, bool progressive = false) {
+    JpegSpec s;
+    s.width = w;
+    s.height = h;
+    s.components = components;
+    s.pixels = jpegTestPattern(w, h, components);
+    s.progressive = progressive;
+    return writeJpeg(s);
+}
+
+void expectJpegPixels(const Image2D& img, int components) {
+    const Bytes expected = jpegTestPattern(img.getWidth(), img.getHeight(), components);
+    ASSERT_EQ(img.pixels().size(), expected.size());
+    for (std::size_t i = 0; i < expected.size(); ++i)
+        ASSERT_LE(std::abs(int(img.pixels()[i]) - int(expected[i])), kJpegTolerance) << "sample " << i;
+}
+
+std::string loadFailure(const std::string& name) {
+    try {
+        Loader::load(name);
+    } catch (const IOException& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "load of " << name << " succeeded";
+    return {};
+}
+
+}  // namespace
+
+TEST(Loader, JpegLoadsAsImmutableImage2D) {
+    const Bytes jpeg = jpegBytes(5, 3, 3);
+    const auto r = Loader::loadDetailed(std::span<const std::uint8_t>(jpeg), 0);
+    ASSERT_EQ(r.roots.size(), 1u);
+    ASSERT_EQ(r.objects.size(), 1u);
+    auto img = dynamicCast<Image2D>(r.roots[0]);
+    ASSERT_TRUE(img);
+    EXPECT_FALSE(img->isMutable());
+    EXPECT_EQ(img->getFormat(), Image2D::RGB);
+    EXPECT_EQ(img->getWidth(), 5);
+    EXPECT_EQ(img->getHeight(), 3);
+    expectJpegPixels(*img, 3);
+    EXPECT_EQ(r.versionMajor, 0);
+    EXPECT_FALSE(r.hasExternalReferences);
+
+    // At an offset inside a larger array, as a PNG or .m3g may be.
+    Bytes container = {9, 9};
+    const Bytes grey = jpegBytes(4, 6, 1, true);
+    container.insert(container.end(), grey.begin(), grey.end());
+    const auto roots = Loader::load(std::span<const std::uint8_t>(container), 2);
+    ASSERT_EQ(roots.size(), 1u);
+    auto lum = dynamicCast<Image2D>(roots[0]);
+    ASSERT_TRUE(lum);
+    EXPECT_EQ(lum->getFormat(), Image2D::LUMINANCE);
+    expectJpegPixels(*lum, 1);
+}
+
+TEST(Loader, JpegFileByName) {
+    TempDir dir;
+    writeBytes(dir.path / "photo.jpg", jpegBytes(7, 9, 3, true));
+    const auto roots = Loader::load((dir.path / "photo.jpg").string());
+    ASSERT_EQ(roots.size(), 1u);
+    auto img = dynamicCast<Image2D>(roots[0]);
+    ASSERT_TRUE(img);
+    EXPECT_EQ(img->getFormat(), Image2D::RGB);
+    EXPECT_EQ(img->getWidth(), 7);
+    EXPECT_EQ(img->getHeight(), 9);
+    expectJpegPixels(*img, 3);
+    // The contents decide, not the name: a JPEG named .png loads as JPEG.
+    writeBytes(dir.path / "misnamed.png", jpegBytes(2, 2, 1));
+    const auto misnamed = Loader::load((dir.path / "misnamed.png").string());
+    ASSERT_EQ(misnamed.size(), 1u);
+    EXPECT_EQ(dynamicCast<Image2D>(misnamed[0])->getFormat(), Image2D::LUMINANCE);
+}
+
+TEST(Loader, ExternalReferenceToJpeg) {
+    TempDir dir;
+    // main.m3g: refs to sub/tex.jpg (colour) and sub/grey.jpg, a Texture2D on
+    // each, an Appearance with both units.
+    writeBytes(dir.path / "sub" / "tex.jpg", jpegBytes(8, 4, 3));
+    writeBytes(dir.path / "sub" / "grey.jpg", jpegBytes(4, 8, 1, true));
+    auto texture = [](std::uint32_t image) {
+        O tex;
+        tex.obj3d().noTransform().ref(image).rgb(0, 0, 0).u8(Texture2D::FUNC_MODULATE).u8(Texture2D::WRAP_REPEAT);
+        tex.u8(Texture2D::WRAP_REPEAT).u8(Texture2D::FILTER_BASE_LEVEL).u8(Texture2D::FILTER_NEAREST);
+        return tex.as(17);
+    };
+    O app;
+    app.obj3d().u8(0).ref(0).ref(0).ref(0).ref(0).refs({4, 5});
+    writeBytes(dir.path / "main.m3g",
+               fileWithExternal({"sub/tex.jpg", "sub/grey.jpg"}, {texture(2), texture(3), app.as(3)}));
+    const auto r = Loader::loadDetailed((dir.path / "main.m3g").string());
+    EXPECT_TRUE(r.hasExternalReferences);
+    ASSERT_EQ(r.objects.size(), 5u);
+    auto colour = at<Image2D>(r, 0);
+    auto grey = at<Image2D>(r, 1);
+    ASSERT_TRUE(colour && grey);
+    EXPECT_FALSE(colour->isMutable());
+    EXPECT_EQ(colour->getFormat(), Image2D::RGB);
+    EXPECT_EQ(colour->getWidth(), 8);
+    EXPECT_EQ(colour->getHeight(), 4);
+    expectJpegPixels(*colour, 3);
+    EXPECT_EQ(grey->getFormat(), Image2D::LUMINANCE);
+    EXPECT_EQ(grey->getWidth(), 4);
+    EXPECT_EQ(grey->getHeight(), 8);
+    expectJpegPixels(*grey, 1);
+    auto a = at<Appearance>(r, 4);
+    EXPECT_EQ(a->getTexture(0)->getImage(), colour);
+    EXPECT_EQ(a->getTexture(1)->getImage(), grey);
+    ASSERT_EQ(r.roots.size(), 1u);
+    EXPECT_EQ(r.roots[0], a);
+}
+
+TEST(Loader, BrokenJpegErrorsNameTheFile) {
+    TempDir dir;
+    const Bytes good = jpegBytes(8, 8, 3);
+    // Standalone: truncated, garbage after SOI, zero size.
+    const std::string cut = (dir.path / "cut.jpg").string();
+    writeBytes(cut, Bytes(good.begin(), good.end() - 40));
+    std::string m = loadFailure(cut);
+    EXPECT_NE(m.find(cut + ": invalid JPEG: Premature end of JPEG file"), std::string::npos) << m;
+    const std::string junk = (dir.path / "junk.jpg").string();
+    Bytes garbage = {0xFF, 0xD8, 0xFF};
+    for (int i = 0; i < 64; ++i) garbage.push_back(static_cast<std::uint8_t>(i * 37 % 251));
+    writeBytes(junk, garbage);
+    m = loadFailure(junk);
+    EXPECT_NE(m.find(junk + ": invalid JPEG: "), std::string::npos) << m;
+    const std::string empty = (dir.path / "empty.jpg").string();
+    Bytes zero = good;
+    setJpegSize(zero, 8, 0);
+    writeBytes(empty, zero);
+    m = loadFailure(empty);
+    EXPECT_NE(m.find(empty + ": invalid JPEG: Empty JPEG image"), std::string::npos) << m;
+
+    // Through an external reference: the referencing object and the file.
+    O tex;
+    tex.obj3d().noTransform().ref(2).rgb(0, 0, 0).u8(Texture2D::FUNC_MODULATE).u8(Texture2D::WRAP_REPEAT);
+    tex.u8(Texture2D::WRAP_REPEAT).u8(Texture2D::FILTER_BASE_LEVEL).u8(Texture2D::FILTER_NEAREST);
+    writeBytes(dir.path / "main.m3g", fileWithExternal({"cut.jpg"}, {tex.as(17)}));
+    for (bool lenient : {false, true}) {
+        LoaderOptions options;
+        options.lenient = lenient;
+        try {
+            Loader::loadDetailed((dir.path / "main.m3g").string(), options);
+            ADD_FAILURE() << "lenient " << lenient;
+        } catch (const IOException& e) {
+            m = e.what();
+            EXPECT_NE(m.find("section 1, object 2 (External Reference, type 255)"), std::string::npos) << m;
+            EXPECT_NE(m.find("external reference 'cut.jpg'"), std::string::npos) << m;
+            EXPECT_NE(m.find(cut + ": invalid JPEG: Premature end of JPEG file"), std::string::npos) << m;
+        }
+    }
 }
 
 TEST(Loader, LenientWarningsAreReported) {

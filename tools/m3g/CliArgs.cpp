@@ -106,7 +106,7 @@ std::string usageText() {
            "            rendering speed: first frame, ms per frame, fps, CPU per draw, pipelines\n"
            "  view [FILE] [--size WxH] [--time MS] [--camera-index I] [--no-ui] [--lenient]\n"
            "       [--frames N --screenshot OUT.png] [--script FILE] [--no-vsync] [--no-headlight]\n"
-           "            the desktop viewer (.m3g, .png or a game .jar; needs a display);\n"
+           "            the desktop viewer (.m3g, .png, .jpg or a game .jar; needs a display);\n"
            "            --frames/--screenshot/--script run it unattended (docs/viewer.md)\n"
            "  bench soak FILE [--frames N] [--reload K] [--size WxH] [--report R] [--warmup C]\n"
            "            memory over a long run, reloading FILE every K frames: resident and\n"

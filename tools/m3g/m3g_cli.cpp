@@ -93,7 +93,7 @@ int fileInfo(const m3gcli::CliArgs& args) {
         std::printf("approximate content size: %u bytes\n", static_cast<unsigned>(result.approximateContentSize));
         std::printf("external references: %s\n", result.hasExternalReferences ? "yes" : "no");
     } else {
-        std::printf("format: PNG image\n");
+        std::printf("format: image (PNG or JPEG)\n");
     }
     std::printf("objects: %zu loaded, %zu roots\n", result.objects.size(), result.roots.size());
     for (const auto& [cls, n] : m3gcli::countByClass(roots)) std::printf("  %-22s %d\n", cls.c_str(), n);

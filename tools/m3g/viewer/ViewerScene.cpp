@@ -26,7 +26,7 @@ void countMeshes(Node& node, SceneStats& s) {
         for (int i = 0; i < group->getChildCount(); ++i) countMeshes(*group->getChild(i), s);
 }
 
-/// A PNG: a World showing the image as an unscaled sprite, pixel for pixel.
+/// A PNG or JPEG: a World showing the image as an unscaled sprite, pixel for pixel.
 m3gcli::PreparedScene imageScene(const LoadResult& loaded) {
     m3gcli::PreparedScene p;
     p.world = Ref<World>(new World());
@@ -48,7 +48,7 @@ m3gcli::PreparedScene imageScene(const LoadResult& loaded) {
     Ref<Background> background(new Background());
     background->setColor(static_cast<int>(0xFF404040u));
     p.world->setBackground(background.get());
-    p.notes.push_back("showing the PNG as an unscaled sprite");
+    p.notes.push_back("showing the image as an unscaled sprite");
     return p;
 }
 
