@@ -89,6 +89,28 @@ std::string messageOf(const std::function<void()>& f) {
 
 }  // namespace
 
+TEST(JarArchive, M3gEntriesAreFoundByTheirIdentifierWhateverTheName) {
+    // The JSR-184 file identifier (JSR-184 1.1, file format: 12 bytes), then
+    // anything: the entry is listed as M3G data even named .res or .bin.
+    const Bytes identifier{0xAB, 0x4A, 0x53, 0x52, 0x31, 0x38, 0x34, 0xBB, 0x0D, 0x0A, 0x1A, 0x0A};
+    Bytes model = identifier;
+    model.insert(model.end(), 100, 0);
+    TempDir dir;
+    const fs::path jar = dir.path / "game.jar";
+    writeZip(jar, {{"a.png", Bytes{0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A}},
+                   {"res/car.res", model},
+                   {"res/empty.bin", {}},
+                   {"res/road.BIN", model, false},
+                   {"res/nearly.bin", Bytes(identifier.begin(), identifier.begin() + 11)}});  // a prefix
+    JarArchive a(jar.string());
+    std::vector<std::string> others;
+    // A prefix of the identifier counts as M3G (a truncated model, which a
+    // batch then reports as failed rather than skipping it).
+    EXPECT_EQ(a.m3gEntries(&others), (std::vector<std::string>{"res/car.res", "res/road.BIN", "res/nearly.bin"}));
+    EXPECT_EQ(others, (std::vector<std::string>{"a.png", "res/empty.bin"}));
+    EXPECT_EQ(a.m3gEntries().size(), 3u) << "others is optional";
+}
+
 TEST(JarArchive, ListsFileEntriesInOrderWithoutFolders) {
     TempDir dir;
     const fs::path jar = dir.path / "game.jar";
@@ -105,7 +127,9 @@ TEST(JarArchive, ListsFileEntriesInOrderWithoutFolders) {
     EXPECT_EQ(a.entries()[1].compressedSize, 14u);  // stored
     EXPECT_EQ(a.entries()[3].size, 5000u);
     EXPECT_LT(a.entries()[3].compressedSize, 5000u);  // deflated run of one byte
-    EXPECT_EQ(a.m3gEntries(), (std::vector<std::string>{"res/hero.M3G", "res/level1.m3g"}));
+    std::vector<std::string> others;
+    EXPECT_EQ(a.m3gEntries(&others), (std::vector<std::string>{"res/hero.M3G", "res/level1.m3g"}));
+    EXPECT_EQ(others, (std::vector<std::string>{"META-INF/MANIFEST.MF", "Game.class"}));
     EXPECT_TRUE(a.contains("Game.class"));
     EXPECT_FALSE(a.contains("res/"));
     EXPECT_TRUE(JarArchive::looksLikeZip(jar));

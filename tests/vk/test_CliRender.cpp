@@ -177,17 +177,21 @@ TEST_F(CliRenderTest, BatchOverAFolderRendersEveryM3gAndReportsFailures) {
     fs::create_directories(in / "sub");
     fs::copy_file(sample(), in / "a.m3g");
     fs::copy_file(sample(), in / "sub" / "b.M3G");
+    fs::copy_file(sample(), in / "sub" / "level.res");  // M3G data under a game's own extension
     std::ofstream(in / "broken.m3g") << "not an m3g file";
     std::ofstream(in / "notes.txt") << "ignored";
     testing::internal::CaptureStdout();
     const int status = render({in.string(), "-o", at("out").string(), "--size", "32x24"});
     const std::string out = testing::internal::GetCapturedStdout();
     EXPECT_EQ(status, 1);  // one file failed
-    EXPECT_NE(out.find("3 file(s)"), std::string::npos) << out;
-    EXPECT_NE(out.find("2 ok, 1 failed"), std::string::npos) << out;
+    EXPECT_NE(out.find("4 file(s)"), std::string::npos) << out;
+    EXPECT_NE(out.find("3 ok, 1 failed"), std::string::npos) << out;
     EXPECT_NE(out.find("failed: " + (in / "broken.m3g").string() + ": "), std::string::npos) << out;
+    EXPECT_NE(out.find("skipped 1 file(s) that are not M3G data"), std::string::npos) << out;
+    EXPECT_NE(out.find("notes.txt"), std::string::npos) << out;
     EXPECT_TRUE(fs::exists(at("out") / "a.png"));
     EXPECT_TRUE(fs::exists(at("out") / "sub" / "b.png"));
+    EXPECT_TRUE(fs::exists(at("out") / "sub" / "level.res.png")) << "found by its identifier, not its name";
     EXPECT_FALSE(fs::exists(at("out") / "broken.png"));
     EXPECT_FALSE(fs::exists(at("out") / "notes.png"));
     EXPECT_EQ(m3gcli::readPng((at("out") / "a.png").string()).width, 32);
@@ -206,14 +210,18 @@ TEST_F(CliRenderTest, BatchOverAJarRendersItsM3gEntries) {
     m3gtest::writeZip(jar, {{"META-INF/MANIFEST.MF", {'M'}},
                             {"Game.class", std::vector<std::uint8_t>(64, 0xCA)},
                             {"res/level.m3g", bytes(sample())},
+                            {"res/models/car.mod", bytes(sample())},
                             {"res/broken.m3g", {'x', 'y'}}});
     testing::internal::CaptureStdout();
     const int status = render({jar.string(), "-o", at("out").string(), "--size", "32x24"});
     const std::string out = testing::internal::GetCapturedStdout();
     EXPECT_EQ(status, 1);
-    EXPECT_NE(out.find("1 ok, 1 failed"), std::string::npos) << out;
+    EXPECT_NE(out.find("2 ok, 1 failed"), std::string::npos) << out;
     EXPECT_NE(out.find(jar.string() + "!/res/broken.m3g"), std::string::npos) << out;
+    EXPECT_NE(out.find("skipped 2 file(s) that are not M3G data"), std::string::npos) << out;
+    EXPECT_NE(out.find("Game.class"), std::string::npos) << out;
     EXPECT_TRUE(fs::exists(at("out") / "res" / "level.png"));
+    EXPECT_TRUE(fs::exists(at("out") / "res" / "models" / "car.mod.png")) << "found by its identifier, not its name";
     // The same pixels as rendering the file directly.
     ASSERT_EQ(render({sample().string(), "-o", at("direct.png").string(), "--size", "32x24"}), 0);
     EXPECT_TRUE(identical(m3gcli::readPng((at("out") / "res" / "level.png").string()),

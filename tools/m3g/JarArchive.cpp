@@ -10,6 +10,8 @@
 
 #include <m3g/Exception.h>
 
+#include "FormatSniffer.h"
+
 namespace m3gcli {
 
 namespace fs = std::filesystem;
@@ -85,10 +87,24 @@ JarArchive::~JarArchive() {
     }
 }
 
-std::vector<std::string> JarArchive::m3gEntries() const {
+std::vector<std::string> JarArchive::m3gEntries(std::vector<std::string>* others) const {
     std::vector<std::string> out;
-    for (const Entry& e : entries_)
-        if (endsWithNoCase(e.name, ".m3g")) out.push_back(e.name);
+    for (const Entry& e : entries_) {
+        bool m3g = endsWithNoCase(e.name, ".m3g");
+        if (!m3g && e.size > 0) {
+            try {
+                // The whole entry: J2ME archives are small, and an entry
+                // over the size limit is no model a handset loaded.
+                m3g = m3g::detail::sniffFormat(read(e.name)) == m3g::detail::InputFormat::M3G;
+            } catch (const std::exception&) {
+                m3g = false;  // unreadable (encrypted, too large, corrupt): not listed as M3G
+            }
+        }
+        if (m3g)
+            out.push_back(e.name);
+        else if (others)
+            others->push_back(e.name);
+    }
     return out;
 }
 

@@ -47,8 +47,12 @@ public:
     const std::string& path() const noexcept { return path_; }
     /// File entries in central directory order (folders left out).
     const std::vector<Entry>& entries() const noexcept { return entries_; }
-    /// Names of the entries ending in ".m3g" (any case), in archive order.
-    std::vector<std::string> m3gEntries() const;
+    /// The entries that hold M3G data, in archive order: those whose bytes
+    /// begin with the JSR-184 file identifier, whatever their name (games
+    /// ship models as .res, .mod, .bin...), and those named ".m3g" (any
+    /// case), which a batch then reports if they are broken. The other file
+    /// entries go to `others` when it is given.
+    std::vector<std::string> m3gEntries(std::vector<std::string>* others = nullptr) const;
     bool contains(const std::string& name) const;
 
     /// The bytes of entry `name`. Throws JarError when there is no such entry,

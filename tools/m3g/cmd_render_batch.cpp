@@ -1,9 +1,11 @@
-// Batch mode of m3g render: every .m3g of a folder or of a J2ME .jar, with a
-// progress bar on a terminal and a summary of what failed and why.
+// Batch mode of m3g render: every M3G file of a folder or of a J2ME .jar
+// (found by its identifier bytes, whatever its name), with a progress bar on
+// a terminal and a summary of what failed and why and of what was skipped.
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <memory>
 #include <string>
@@ -14,6 +16,7 @@
 #include <m3g/m3g.h>
 #include <m3g/vk/Vulkan.h>
 
+#include "FormatSniffer.h"
 #include "JarArchive.h"
 #include "RenderRun.h"
 
@@ -34,6 +37,21 @@ bool isM3gName(const std::string& name) {
     std::string ext = name.substr(name.size() - 4);
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return ext == ".m3g";
+}
+
+/// Where a model's images go under OUTDIR: "level.m3g" -> "level", but
+/// "level.res" -> "level.res", so that level.m3g and level.res beside it
+/// do not write the same PNG.
+fs::path outputStem(const fs::path& relative) {
+    return isM3gName(relative.filename().string()) ? fs::path(relative).replace_extension() : relative;
+}
+
+/// What the first bytes of `file` are (m3g::detail::sniffFormat).
+m3g::detail::InputFormat sniffFile(const fs::path& file) {
+    std::uint8_t head[32] = {};  // enough to tell M3G 2.0 (FormatSniffer.cpp)
+    std::ifstream in(file, std::ios::binary);
+    in.read(reinterpret_cast<char*>(head), sizeof head);
+    return m3g::detail::sniffFormat(std::span<const std::uint8_t>(head, static_cast<std::size_t>(in.gcount())));
 }
 
 /// One line redrawn in place on a terminal: [#####-----] 12/40 name.
@@ -59,29 +77,40 @@ private:
     bool enabled_;
 };
 
-std::vector<BatchItem> folderItems(const fs::path& dir) {
+/// The folder's M3G files: those that begin with the JSR-184 identifier,
+/// whatever their name (games ship models as .res, .mod, .tex...), and those
+/// named .m3g (reported if broken). The other files go to `skipped`, each
+/// with what its bytes are.
+std::vector<BatchItem> folderItems(const fs::path& dir, std::vector<std::string>& skipped) {
     std::vector<fs::path> files;
-    for (const auto& e : fs::recursive_directory_iterator(dir, fs::directory_options::skip_permission_denied))
-        if (e.is_regular_file() && isM3gName(e.path().filename().string())) files.push_back(e.path());
+    for (const auto& e : fs::recursive_directory_iterator(dir, fs::directory_options::skip_permission_denied)) {
+        if (!e.is_regular_file()) continue;
+        const m3g::detail::InputFormat format = sniffFile(e.path());
+        if (format == m3g::detail::InputFormat::M3G || isM3gName(e.path().filename().string()))
+            files.push_back(e.path());
+        else
+            skipped.push_back(fs::relative(e.path(), dir).string() + " (" + m3g::detail::describeFormat(format) + ")");
+    }
     std::sort(files.begin(), files.end());
+    std::sort(skipped.begin(), skipped.end());
     std::vector<BatchItem> items;
     for (const fs::path& f : files) {
         BatchItem item;
         item.label = f.string();
-        item.relative = fs::relative(f, dir).replace_extension();
+        item.relative = outputStem(fs::relative(f, dir));
         item.load = [f](const m3g::LoaderOptions& options) { return m3g::Loader::loadDetailed(f.string(), options); };
         items.push_back(std::move(item));
     }
     return items;
 }
 
-std::vector<BatchItem> jarItems(const std::shared_ptr<JarArchive>& jar) {
+std::vector<BatchItem> jarItems(const std::shared_ptr<JarArchive>& jar, std::vector<std::string>& skipped) {
     std::vector<BatchItem> items;
-    for (const std::string& name : jar->m3gEntries()) {
+    for (const std::string& name : jar->m3gEntries(&skipped)) {
         BatchItem item;
         item.label = jar->path() + "!/" + name;
         // Entry names that leave the folder fail in load() before this is used.
-        item.relative = fs::path(name).replace_extension();
+        item.relative = outputStem(fs::path(name));
         item.load = [jar, name](const m3g::LoaderOptions& options) { return jar->load(name, options); };
         items.push_back(std::move(item));
     }
@@ -92,20 +121,22 @@ std::vector<BatchItem> jarItems(const std::shared_ptr<JarArchive>& jar) {
 
 int renderBatch(const RenderOptions& o) {
     std::vector<BatchItem> items;
+    std::vector<std::string> skipped;
     std::shared_ptr<JarArchive> jar;
     try {
         if (fs::is_directory(o.input)) {
-            items = folderItems(o.input);
+            items = folderItems(o.input, skipped);
         } else {
             jar = std::make_shared<JarArchive>(o.input);
-            items = jarItems(jar);
+            items = jarItems(jar, skipped);
         }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "m3g: render: %s\n", e.what());
         return 1;
     }
     if (items.empty()) {
-        std::fprintf(stderr, "m3g: render: no .m3g files in %s\n", o.input.c_str());
+        std::fprintf(stderr, "m3g: render: no M3G data in %s (%zu file(s), none beginning with the JSR-184 identifier)\n",
+                     o.input.c_str(), skipped.size());
         return 1;
     }
     m3g::LoaderOptions options;
@@ -145,6 +176,15 @@ int renderBatch(const RenderOptions& o) {
     if (warned) std::printf(" (%d with lenient-mode warnings)", warned);
     std::printf("\n");
     for (const Failure& f : failures) std::printf("  failed: %s: %s\n", f.label.c_str(), f.reason.c_str());
+    if (!skipped.empty()) {
+        // Named so that a model under an unusual name is never missed silently.
+        constexpr std::size_t kListed = 10;
+        std::printf("skipped %zu file(s) that are not M3G data (by their first bytes):", skipped.size());
+        for (std::size_t i = 0; i < std::min(kListed, skipped.size()); ++i)
+            std::printf("%s %s", i ? "," : "", skipped[i].c_str());
+        if (skipped.size() > kListed) std::printf(", and %zu more", skipped.size() - kListed);
+        std::printf("\n");
+    }
     return failures.empty() ? 0 : 1;
 }
 

@@ -11,7 +11,7 @@
 //                                 [--frames N --fps F] [--turntable N]
 //                                 [--camera-index I] [--background RRGGBBAA]
 //                                 [--reference REF.png --threshold T]
-//   m3g render DIR|GAME.jar -o OUTDIR  every .m3g of a folder or .jar
+//   m3g render DIR|GAME.jar -o OUTDIR  every M3G file of a folder or .jar
 //   m3g compare A.png B.png [--threshold N] [--max-share S] [--min-psnr DB] [--diff OUT.png]
 //                                 share of pixels off by more than N, PSNR;
 //                                 exit status 0 = within the limits
