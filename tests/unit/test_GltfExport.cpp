@@ -4,6 +4,8 @@
 // images, the GLB container).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -347,6 +349,26 @@ TEST(GltfExport, SceneNodesMaterialsAndGlbContainer) {
     EXPECT_NEAR(unlitMat["alphaCutoff"].get<double>(), 0.5, 1e-9);
     // Lighting off, no colour array: the default colour (white) is the base colour.
     EXPECT_EQ(unlitMat["pbrMetallicRoughness"]["baseColorFactor"], Json({1.0, 1.0, 1.0, 1.0}));
+}
+
+TEST(GltfExport, NodeNamesAreUnique) {
+    // Three Groups without user ids and one with id 7: every node name ends
+    // up different, the first of each name kept as it was.
+    Ref<World> world = new World();
+    for (int i = 0; i < 3; ++i) world->addChild(new Group());
+    Ref<Group> seven = new Group();
+    seven->setUserID(7);
+    world->addChild(seven);
+    Object3D* roots[] = {world.get()};
+    const Json j = glbJson(exportScene(roots).document.toGlb());
+    std::vector<std::string> names;
+    for (const Json& n : j["nodes"]) names.push_back(n["name"].get<std::string>());
+    EXPECT_EQ(std::count(names.begin(), names.end(), "Group"), 1);
+    EXPECT_EQ(std::count(names.begin(), names.end(), "Group #2"), 1);
+    EXPECT_EQ(std::count(names.begin(), names.end(), "Group #3"), 1);
+    EXPECT_EQ(std::count(names.begin(), names.end(), "Group 7"), 1);
+    std::sort(names.begin(), names.end());
+    EXPECT_EQ(std::adjacent_find(names.begin(), names.end()), names.end()) << "a repeated name";
 }
 
 TEST(GltfExport, SkinJointsWeightsAndInverseBindMatrices) {

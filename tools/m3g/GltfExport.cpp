@@ -41,6 +41,28 @@ std::string nodeName(const m3g::Object3D& o) {
     return name;
 }
 
+/// Node names made unique: the second "Group" becomes "Group #2", and so on.
+/// glTF allows repeated names, but importers that key nodes by name refuse
+/// them (assimp 5.2 rejects a file with forty "Group"s).
+void makeNamesUnique(std::vector<Json>& nodes) {
+    std::unordered_map<std::string, int> seen;
+    std::unordered_set<std::string> taken;
+    for (const Json& n : nodes)
+        if (n.contains("name")) taken.insert(n["name"].get<std::string>());
+    for (Json& n : nodes) {
+        if (!n.contains("name")) continue;
+        const std::string name = n["name"].get<std::string>();
+        int& count = seen[name];
+        if (++count == 1) continue;
+        std::string unique;
+        do unique = name + " #" + std::to_string(count++);
+        while (taken.count(unique));  // "Group #2" may be a name of its own
+        --count;
+        taken.insert(unique);
+        n["name"] = unique;
+    }
+}
+
 Json objectExtras(const m3g::Object3D& o) { return {{"m3gClass", o.getClassName()}, {"m3gUserID", o.getUserID()}}; }
 
 /// Column-major floats of a row-major M3G transform (glTF matrices, §3.5.2).
@@ -611,6 +633,7 @@ ExportResult Exporter::run(std::span<m3g::Object3D* const> roots) {
             if (auto* image = dynamic_cast<m3g::Image2D*>(o)) materials_.image(*image);
     }
     if (!scenes.empty()) doc_.json()["scene"] = 0;
+    makeNamesUnique(nodes_);
     if (!nodes_.empty()) doc_.json()["nodes"] = nodes_;
     // Keep the top-level order readable: move extensions to the end.
     if (doc_.json().contains("extensions")) {
