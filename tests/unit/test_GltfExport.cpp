@@ -404,6 +404,39 @@ TEST(GltfExport, SkinJointsWeightsAndInverseBindMatrices) {
     EXPECT_FLOAT_EQ(atRest.at(0, 3), -1.0f);
 }
 
+TEST(GltfExport, SkinnedMeshWithAMatrixIsPutOnAChildWithoutOne) {
+    // A SkinnedMesh whose node transform is a general matrix (no T, R or S)
+    // is exported as a matrix node; the mesh and skin then go on a child, as
+    // no glTF node may have both a skin and a matrix.
+    Ref<Group> skeleton = new Group();
+    Ref<Group> bone = new Group();
+    skeleton->addChild(bone);
+    const int lengths[] = {4};
+    Ref<SkinnedMesh> mesh = new SkinnedMesh(quadBuffer(), new TriangleStripArray(0, lengths), new Appearance(), skeleton);
+    mesh->addTransform(bone, 1, 0, 4);
+    Transform m;
+    m.postTranslate(2, 3, 4);
+    mesh->setTransform(&m);
+    Ref<World> world = new World();
+    world->addChild(mesh);
+    Object3D* roots[] = {world.get()};
+    const Json j = glbJson(exportScene(roots).document.toGlb());
+    int skinned = 0;
+    for (const Json& n : j["nodes"]) {
+        if (!n.contains("skin")) continue;
+        ++skinned;
+        EXPECT_FALSE(n.contains("matrix")) << n.dump();
+        EXPECT_TRUE(n.contains("mesh"));
+    }
+    EXPECT_EQ(skinned, 1);
+    // The matrix stays on the mesh's own node, the parent of the skinned one.
+    bool parentHasMatrix = false;
+    for (const Json& n : j["nodes"])
+        if (n.contains("matrix") && n.contains("children"))
+            for (const Json& c : n["children"]) parentHasMatrix |= j["nodes"][c.get<int>()].contains("skin");
+    EXPECT_TRUE(parentHasMatrix);
+}
+
 TEST(GltfExport, PalettedImageBecomesAnRgbPng) {
     const std::uint8_t indices[] = {0, 1, 1, 0};
     const std::uint8_t palette[] = {255, 0, 0, 0, 0, 255};

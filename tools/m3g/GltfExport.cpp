@@ -487,10 +487,19 @@ void Exporter::exportMesh(const MeshJob& job) {
         meshJson["weights"] = std::vector<float>(w.begin(), w.end());
         morphTargets_[&mesh] = static_cast<int>(targets.size());
     }
-    Json& node = nodes_[static_cast<std::size_t>(job.node)];
+    int meshNode = job.node;
+    if (skinIndex >= 0 && nodes_[static_cast<std::size_t>(job.node)].contains("matrix")) {
+        // A skinned mesh's own transform plays no part in glTF (the joints
+        // place its vertices), and importers refuse a node that has both a
+        // skin and a matrix (f3d: "Invalid node.matrix value with node.skin
+        // defined"): the mesh goes on a child without a transform.
+        meshNode = newNode({{"name", nodeName(mesh) + " skinned"}});
+        addChild(job.node, meshNode);
+    }
+    Json& node = nodes_[static_cast<std::size_t>(meshNode)];
     node["mesh"] = doc_.add("meshes", std::move(meshJson));
     if (skinIndex >= 0) node["skin"] = skinIndex;
-    meshNodes_[&mesh] = job.node;
+    meshNodes_[&mesh] = meshNode;
 }
 
 void Exporter::exportAnimations(std::span<m3g::Object3D* const> all) {
