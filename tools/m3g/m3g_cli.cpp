@@ -36,6 +36,7 @@
 #include <vector>
 
 #include <m3g/m3g.h>
+#include <m3g/vk/Vulkan.h>
 
 #include "CliArgs.h"
 #include "Commands.h"
@@ -60,6 +61,20 @@ int libraryInfo() {
                     std::printf("  %-30s %s\n", key.c_str(), v.c_str());
             },
             value);
+    }
+    // The Vulkan devices and the one Graphics3D renders with (M3G_VK_DEVICE
+    // chooses), or why there is none: the first thing to know when a render
+    // is slow (lavapipe) or fails.
+    try {
+        const auto devices = m3g::vk::listDevices();
+        const m3g::vk::DeviceInfo current = m3g::vk::currentDevice();
+        std::printf("Vulkan devices:\n");
+        for (const auto& d : devices)
+            std::printf("  %s %s (%s, Vulkan %u.%u)\n", d.deviceID == current.deviceID && d.name == current.name ? "*" : " ",
+                        d.name.c_str(), d.type.c_str(), d.apiVersion >> 22, (d.apiVersion >> 12) & 0x3FF);
+        std::printf("renders with: %s (%s)\n", current.name.c_str(), current.type.c_str());
+    } catch (const std::exception& e) {
+        std::printf("Vulkan: no device (%s)\n", e.what());
     }
     return 0;
 }
