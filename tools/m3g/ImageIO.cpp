@@ -9,6 +9,8 @@
 #include <png.h>
 
 #include <m3g/Graphics.h>
+#include <m3g/Image2D.h>
+#include <m3g/PngWriter.h>
 
 namespace m3gcli {
 
@@ -77,18 +79,15 @@ void writePng(const std::string& path, const RgbaImage& image, bool alpha) {
 }
 
 std::vector<std::uint8_t> encodePng(const RgbaImage& image, bool alpha) {
+    // The library's encoder (api/m3g/PngWriter.h), over an Image2D of the pixels.
     std::vector<std::uint8_t> rgb;
     const void* data = nullptr;
-    png_image img = describe(image, alpha, rgb, data);
-    png_alloc_size_t size = 0;
-    // First call measures, second writes.
-    if (!png_image_write_to_memory(&img, nullptr, &size, 0, data, 0, nullptr))
-        throw std::runtime_error(std::string("cannot encode PNG: ") + img.message);
-    std::vector<std::uint8_t> out(size);
-    if (!png_image_write_to_memory(&img, out.data(), &size, 0, data, 0, nullptr))
-        throw std::runtime_error(std::string("cannot encode PNG: ") + img.message);
-    out.resize(size);
-    return out;
+    describe(image, alpha, rgb, data);
+    const std::size_t bytes = static_cast<std::size_t>(image.width) * image.height * (alpha ? 4 : 3);
+    m3g::Ref<m3g::Image2D> pixels(new m3g::Image2D(alpha ? m3g::Image2D::RGBA : m3g::Image2D::RGB, image.width,
+                                                   image.height,
+                                                   std::span<const std::uint8_t>(static_cast<const std::uint8_t*>(data), bytes)));
+    return m3g::encodePng(*pixels);
 }
 
 Comparison compareImages(const RgbaImage& a, const RgbaImage& b, int threshold) {
