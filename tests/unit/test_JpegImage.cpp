@@ -42,23 +42,18 @@ int maxDifference(const Bytes& a, const Bytes& b) {
     return worst;
 }
 
-JpegSpec rgbSpec(int w = 16, int h = 16) {
+/// The test pattern as a JPEG to encode: `components` 3 (RGB) or 1 (grey).
+JpegSpec patternSpec(int components, int w, int h) {
     JpegSpec s;
     s.width = w;
     s.height = h;
-    s.components = 3;
-    s.pixels = jpegTestPattern(w, h, 3);
+    s.components = components;
+    s.pixels = jpegTestPattern(w, h, components);
     return s;
 }
 
-JpegSpec greySpec(int w = 16, int h = 16) {
-    JpegSpec s;
-    s.width = w;
-    s.height = h;
-    s.components = 1;
-    s.pixels = jpegTestPattern(w, h, 1);
-    return s;
-}
+JpegSpec rgbSpec(int w = 16, int h = 16) { return patternSpec(3, w, h); }
+JpegSpec greySpec(int w = 16, int h = 16) { return patternSpec(1, w, h); }
 
 std::string jpegFailure(const Bytes& b) {
     try {
