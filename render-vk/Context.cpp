@@ -32,29 +32,59 @@ bool Context::beforeCreation(const std::function<void()>& f) {
     return true;
 }
 
+namespace {
+// Keeps `context` as the shared one (gContextMutex held).
+void install(std::shared_ptr<Context> context) {
+    gContext = std::move(context);
+    gExists = true;
+    // Destroy the device before the driver's and layers' static
+    // destructors (registered before this handler, so they run after it).
+    static const bool registered = [] {
+        std::atexit([] {
+            std::shared_ptr<Context> last;
+            {
+                std::lock_guard inner(gContextMutex);
+                last.swap(gContext);
+                gExists = false;
+            }
+        });
+        return true;
+    }();
+    (void)registered;
+}
+}  // namespace
+
 std::shared_ptr<Context> Context::shared() {
     std::lock_guard lock(gContextMutex);
-    if (!gContext) {
-        gContext.reset(new Context());
-        gExists = true;
-        // Destroy the device before the driver's and layers' static
-        // destructors (registered before this handler, so they run after it).
-        static const bool registered = [] {
-            std::atexit([] {
-                std::shared_ptr<Context> last;
-                {
-                    std::lock_guard inner(gContextMutex);
-                    last.swap(gContext);
-                    gExists = false;
-                }
-            });
-            return true;
-        }();
-        (void)registered;
-    }
+    if (!gContext) install(std::shared_ptr<Context>(new Context()));
     return gContext;
 }
 
+void Context::adopt(const ExternalDevice& device) {
+    std::lock_guard lock(gContextMutex);
+    if (gContext)
+        throw IllegalStateException(std::string("m3g::vk::useDevice: m3g-vk already renders with ") +
+                                    (gContext->external() ? "an application's" : "its own") + " device \"" +
+                                    gContext->info().name +
+                                    "\"; call useDevice before the first Graphics3D clear or render, or after "
+                                    "m3g::vk::releaseDevice()");
+    install(std::shared_ptr<Context>(new Context(device)));
+}
+
+void Context::release() {
+    std::shared_ptr<Context> last;
+    {
+        std::lock_guard lock(gContextMutex);
+        if (!gContext) return;
+        if (const long holders = gContext.use_count() - 1; holders > 0)
+            throw IllegalStateException("m3g::vk::releaseDevice: " + std::to_string(holders) +
+                                        " renderer(s) still use the device; call Graphics3D::releaseRenderer() on "
+                                        "each thread's Graphics3D that rendered (and release bound targets) first");
+        last.swap(gContext);
+        gExists = false;
+    }
+    // Destroyed here, outside the lock: it waits for the device.
+}
 
 Context::Context() {
     instance_ = createInstance(envValidation(), validation_);
@@ -142,6 +172,15 @@ void Context::createDevice(const std::vector<VkPhysicalDevice>& devices) {
 }
 
 Context::~Context() {
+    if (external_) {
+        // The application's device and instance stay; only what m3g-vk made goes.
+        {
+            std::lock_guard lock(*queueLock_);
+            vkDeviceWaitIdle(device_);
+        }
+        vkDestroyCommandPool(device_, pool_, nullptr);
+        return;
+    }
     if (device_) {
         vkDeviceWaitIdle(device_);
         vkDestroyCommandPool(device_, pool_, nullptr);
@@ -341,17 +380,17 @@ void Context::submit(std::span<const VkCommandBuffer> cmds, VkFence fence, VkSem
     si.pWaitDstStageMask = &waitStage;
     si.signalSemaphoreCount = signal ? 1 : 0;
     si.pSignalSemaphores = &signal;
-    std::lock_guard lock(queueMutex_);
+    std::lock_guard lock(*queueLock_);
     check(vkQueueSubmit(queue_, 1, &si, fence), "vkQueueSubmit");
 }
 
 VkResult Context::present(const VkPresentInfoKHR& info) {
-    std::lock_guard lock(queueMutex_);
+    std::lock_guard lock(*queueLock_);
     return vkQueuePresentKHR(queue_, &info);
 }
 
 void Context::waitIdle() {
-    std::lock_guard lock(queueMutex_);
+    std::lock_guard lock(*queueLock_);
     vkDeviceWaitIdle(device_);
 }
 

@@ -15,6 +15,7 @@
 
 #include <volk.h>
 
+#include <m3g/vk/ExternalDevice.h>
 #include <m3g/vk/Vulkan.h>
 
 namespace m3g::vk {
@@ -69,6 +70,11 @@ public:
     /// Runs `f` and returns true if the device has not been created yet
     /// (under the lock that creation takes); false otherwise.
     static bool beforeCreation(const std::function<void()>& f);
+    /// useDevice(): the shared context on the application's device, made
+    /// now (ISE when one exists already).
+    static void adopt(const ExternalDevice& device);
+    /// releaseDevice(): drops the shared context (ISE while renderers hold it).
+    static void release();
 
     VkInstance instance() const noexcept { return instance_; }
     VkPhysicalDevice physicalDevice() const noexcept { return physical_; }
@@ -80,6 +86,8 @@ public:
     VkFormat depthFormat() const noexcept { return depthFormat_; }
     VkSampleCountFlagBits maxSamples() const noexcept { return maxSamples_; }
     bool validation() const noexcept { return validation_; }
+    /// Made on the application's device (useDevice), which it does not own.
+    bool external() const noexcept { return external_; }
 
     /// What the host does with a host buffer's memory: writes it for the
     /// device (uniforms, vertices, staging), or reads what the device wrote
@@ -127,7 +135,7 @@ public:
     void waitIdle();
     /// The queue lock, for any other direct use of queue() (e.g.
     /// vkQueuePresentKHR): hold it for the duration of the call.
-    [[nodiscard]] std::unique_lock<std::mutex> lockQueue() { return std::unique_lock(queueMutex_); }
+    [[nodiscard]] std::unique_lock<std::mutex> lockQueue() { return std::unique_lock(*queueLock_); }
 
     /// A resettable command pool of the queue family for one thread's (one
     /// renderer's) own command buffers: a pool and the buffers allocated from
@@ -148,6 +156,7 @@ public:
 
 private:
     Context();
+    explicit Context(const ExternalDevice& device);
     /// The logical device on physical_ with the features and extensions render-vk uses.
     void createDevice(const std::vector<VkPhysicalDevice>& devices);
     std::uint32_t memoryType(std::uint32_t bits, VkMemoryPropertyFlags want, VkMemoryPropertyFlags fallback) const;
@@ -170,7 +179,9 @@ private:
     bool validation_ = false;
     bool swapchain_ = false;
     bool wireframe_ = false;
+    bool external_ = false;
     std::mutex queueMutex_, poolMutex_;
+    std::mutex* queueLock_ = &queueMutex_;  // queueMutex_ or the application's (ExternalDevice::queueMutex)
 };
 
 }  // namespace m3g::vk

@@ -14,6 +14,7 @@
 
 namespace m3g::vk {
 
+class ImageTarget;
 class WindowTarget;
 
 class FrameTarget {
@@ -25,6 +26,9 @@ public:
     /// when they had to be remade: descriptor sets naming the old prior
     /// image are then stale).
     bool prepare(const frame::Target& target);
+    /// Frees what only this frame used (the view of an application's depth
+    /// image); after the frame's fence, or when it was never submitted.
+    void endFrame() noexcept;
     /// Records the opening of a frame into `cmd`: the prior contents (the
     /// target's pixels uploaded, a window's kept image, or none when the
     /// first command writes every pixel: `covered`, or a clear to
@@ -43,6 +47,9 @@ public:
     std::uint32_t height() const noexcept { return height_; }
     VkSampleCountFlagBits samples() const noexcept { return samples_; }
     bool hasDepth() const noexcept { return hasDepth_; }
+    /// The depth attachment keeps the values it had (an application's depth
+    /// image): a depth clear cannot be skipped as moot.
+    bool depthLoaded() const noexcept { return depthAttachment_.loadOp == VK_ATTACHMENT_LOAD_OP_LOAD; }
 
     /// What finish() recorded.
     struct Ending {
@@ -66,12 +73,25 @@ public:
 private:
     void ensureImages(std::uint32_t width, std::uint32_t height, VkSampleCountFlagBits samples, bool& remade);
     void copyToHost(VkCommandBuffer cmd, VkImage image);
+    /// An application's image (ImageTarget) to or from `own` (an RGBA image of
+    /// this frame's size): a copy where the formats match, else a blit.
+    void copyExternal(VkCommandBuffer cmd, VkImage from, VkImageLayout fromLayout, VkFormat fromFormat, VkImage to,
+                      VkImageLayout toLayout, VkFormat toFormat);
+    /// The frame's colour into the application's image, and both of its
+    /// images into their layouts after (ImageTarget).
+    void finishExternal(VkCommandBuffer cmd);
+    /// A view of the application's depth image (made once per image).
+    VkImageView externalDepthView(VkImage image, VkFormat format);
     bool recordPresent(VkCommandBuffer cmd, bool& readback);
 
     Context& ctx_;
     Image color_, depth_;             // single-sampled colour (read back) and depth
     Image* target_ = &color_;         // the colour image of this frame: color_ or a window's back image
     WindowTarget* window_ = nullptr;  // the bound target when it is a window
+    ImageTarget* external_ = nullptr;  // the bound target when it is an application's image
+    VkImageLayout externalColorLayout_ = VK_IMAGE_LAYOUT_UNDEFINED;  // its layout as this frame's commands go
+    VkImage externalDepth_ = VK_NULL_HANDLE;  // the application's depth image of externalDepthView_
+    VkImageView externalDepthView_ = VK_NULL_HANDLE;
     Image msaaColor_, initial_;       // ANTIALIAS: multisampled colour and the prior contents to start from
     VkSampleCountFlagBits samples_ = VK_SAMPLE_COUNT_1_BIT;
     std::uint32_t width_ = 0, height_ = 0;

@@ -29,6 +29,9 @@ extern std::vector<std::string> gWindowExtensions;
 bool envValidation();
 /// ", with VK_DRIVER_FILES=..." for the loader variables that choose drivers, or "".
 std::string driverOverrides();
+/// Opens the system's Vulkan loader for volk (once; VulkanError saying what
+/// is missing).
+void loadLoader();
 /// Loads the Vulkan loader (once) and creates an instance; `validation` is
 /// set when the layer was found and enabled. VulkanError saying what is missing.
 VkInstance createInstance(bool wantValidation, bool& validation);

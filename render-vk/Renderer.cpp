@@ -210,7 +210,12 @@ void Renderer::clear(const frame::Target& target, const frame::ViewState& view, 
     openFrame(target, asLoadOp && !c.imageCovers ? c.rgba : nullptr, asLoadOp);
     setView(view);
     if (view.scissor.empty()) return;
-    const bool clearDepth = c.depth && target_.hasDepth() && drawn;
+    // An application's depth image is loaded, not cleared: a depth clear of
+    // the whole target before the first draw becomes its load operation,
+    // any other is recorded.
+    if (!drawn && c.depth && c.wholeTarget && target_.hasDepth() && target_.depthLoaded())
+        target_.depthAttachment().loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;  // its clear value is far
+    const bool clearDepth = c.depth && target_.hasDepth() && (drawn || target_.depthLoaded());
     const VkClearRect rect{scissor_, 0, 1};
     VkClearAttachment attachments[2]{};
     std::uint32_t count = 0;
@@ -256,6 +261,7 @@ void Renderer::release(const frame::Target& target, std::span<const std::uint64_
         // Nothing in flight: the copies of released objects can go now.
         resources_->release(released);
         resources_->endFrame();
+        target_.endFrame();
         started_ = false;
         return;
     }

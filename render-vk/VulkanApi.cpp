@@ -37,6 +37,10 @@ bool requestWindowExtensions(const std::vector<std::string>& instanceExtensions)
     return Context::beforeCreation([&] { gWindowExtensions = instanceExtensions; });
 }
 
+void useDevice(const ExternalDevice& device) { Context::adopt(device); }
+
+void releaseDevice() { Context::release(); }
+
 bool validationEnabled() { return Context::exists() && Context::get().validation(); }
 std::uint64_t validationMessageCount() { return gValidationMessages.load(); }
 

@@ -27,7 +27,7 @@ VkPhysicalDeviceProperties someDevice() {
     VkPhysicalDeviceProperties p{};
     p.vendorID = 0x10de;
     p.deviceID = 0x2335;
-    for (int i = 0; i < VK_UUID_SIZE; ++i) p.pipelineCacheUUID[i] = static_cast<std::uint8_t>(i * 7 + 1);
+    for (std::uint32_t i = 0; i < VK_UUID_SIZE; ++i) p.pipelineCacheUUID[i] = static_cast<std::uint8_t>(i * 7 + 1);
     return p;
 }
 
