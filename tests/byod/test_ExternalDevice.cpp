@@ -20,6 +20,7 @@
 #include <m3g/vk/Vulkan.h>
 
 #include "AppDevice.h"
+#include "HoldDriver.h"
 #include "SampleScene.h"
 
 namespace {
@@ -34,7 +35,10 @@ byod::AppDevice* gApp = nullptr;
 
 class AppEnvironment : public ::testing::Environment {
 public:
-    void SetUp() override { gApp = new byod::AppDevice(true); }
+    void SetUp() override {
+        m3gtest::holdLavapipeLoaded();  // LeakSanitizer builds: see HoldDriver.h
+        gApp = new byod::AppDevice(true);
+    }
     void TearDown() override {
         // Whatever a test left: m3g-vk lets go of the device, then the
         // application destroys it (the layer reports objects left alive).

@@ -5,6 +5,7 @@
 #   1. render/  find_package(m3g) + m3g::m3g: renders the sample scene and
 #               compares it with the tree's own `m3g render` of it; the same
 #               for docs/library.md's example program, which writes a PNG;
+#               and examples/byod, an application with its own Vulkan device;
 #   2. the same source through pkg-config (m3g.pc), with g++ alone;
 #   3. scene/   find_package(m3g) + m3g::scene only: load, animate, save,
 #               reload, save again; the program must not contain the renderer.
@@ -36,6 +37,8 @@ fi
 "$work/render/render_png" "$work/sample.m3g" "$work/docs-program.png"
 "$tool" render "$work/sample.m3g" -o "$work/reference-320.png" --size 320x240 >/dev/null
 "$tool" compare "$work/docs-program.png" "$work/reference-320.png" --threshold 2 --max-share 0
+echo "   examples/byod (the application's own device and libvulkan):"
+"$work/render/byod_example" "$work/sample.m3g" "$work/byod.png"
 
 if [ -n "$(find "$prefix" -name 'libm3g.so*' -print -quit)" ]; then
   echo "== shared libraries: sonames and exported symbols"
