@@ -1,0 +1,62 @@
+# Exports every .m3g file of the shared corpus with `m3g export` (lenient
+# load, .glb) and opens each export in two other tools: assimp (`assimp
+# info`, Debian assimp-utils) and f3d (`f3d --no-render`, Debian f3d), both
+# installed by scripts/setup. Fails when either refuses or crashes on an
+# export. Files with no nodes are left out (their glTF has no scene, which
+# both tools refuse: assimp says "No scene", f3d 1.3.1 crashes on any glTF
+# without a mesh). Prints "SKIPPED: ..." when a tool or the corpus is absent.
+#   cmake -DM3G=... -DASSIMP=... -DF3D=... -DCORPUS=../shared/corpus -DOUT=build/gltf-interop -P interop.cmake
+foreach(tool ASSIMP F3D)
+  if(NOT ${tool} OR NOT EXISTS "${${tool}}")
+    message("SKIPPED: ${tool} not found (scripts/setup installs assimp-utils and f3d)")
+    return()
+  endif()
+endforeach()
+if(NOT EXISTS "${CORPUS}/models")
+  message("SKIPPED: shared corpus not found at ${CORPUS}/models")
+  return()
+endif()
+file(GLOB_RECURSE files "${CORPUS}/models/*.m3g")
+list(SORT files)
+file(MAKE_DIRECTORY "${OUT}")
+set(failures 0)
+set(opened 0)
+set(empty 0)
+foreach(f ${files})
+  file(RELATIVE_PATH rel "${CORPUS}/models" "${f}")
+  string(MAKE_C_IDENTIFIER "${rel}" name)
+  set(glb "${OUT}/${name}.glb")
+  execute_process(COMMAND "${M3G}" export "${f}" -o "${glb}" --lenient
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    math(EXPR failures "${failures} + 1")
+    message("FAIL export ${rel}: ${err}")
+    continue()
+  endif()
+  if(err MATCHES "the file has no nodes")
+    math(EXPR empty "${empty} + 1")
+    message("--   no nodes, not opened: ${rel}")
+    continue()
+  endif()
+  execute_process(COMMAND "${ASSIMP}" info "${glb}" RESULT_VARIABLE rc OUTPUT_VARIABLE report ERROR_VARIABLE err
+                  TIMEOUT 60)
+  if(NOT rc EQUAL 0)
+    math(EXPR failures "${failures} + 1")
+    string(REGEX MATCH "ERROR[^\n]*" why "${report}${err}")
+    message("FAIL assimp ${rel}: exit ${rc} ${why}")
+    continue()
+  endif()
+  execute_process(COMMAND "${F3D}" --no-render "${glb}" RESULT_VARIABLE rc OUTPUT_VARIABLE report
+                  ERROR_VARIABLE err TIMEOUT 60)
+  if(NOT rc EQUAL 0)
+    math(EXPR failures "${failures} + 1")
+    message("FAIL f3d ${rel}: exit ${rc} ${err}")
+    continue()
+  endif()
+  math(EXPR opened "${opened} + 1")
+  message("ok   ${rel}")
+endforeach()
+if(failures GREATER 0)
+  message(FATAL_ERROR "${failures} corpus exports failed to export or to open in assimp or f3d (${opened} opened)")
+endif()
+message("all ${opened} corpus exports with nodes open in assimp and f3d (${empty} without nodes left out)")
