@@ -104,6 +104,15 @@ struct NodeSlots {
     int content = -1;  ///< carries M, the mesh/camera/light and the children
 };
 
+/// The glTF rotation (x, y, z, w) taking the unit axis `up` to +Y: 90
+/// degrees about up x Y, or 180 about X for -Y.
+Json uprightRotation(const Axis& up) {
+    if (up[1] < 0.0f) return Json::array({1.0, 0.0, 0.0, 0.0});
+    const double s = std::sqrt(0.5);
+    // up x (0, 1, 0) = (-up.z, 0, up.x)
+    return Json::array({-up[2] * s, 0.0, up[0] * s, s});
+}
+
 struct MeshJob {
     m3g::Mesh* mesh;
     int node;  ///< content node
@@ -112,6 +121,7 @@ struct MeshJob {
 
 class Exporter {
 public:
+    explicit Exporter(const ExportOptions& options) : options_(options) {}
     ExportResult run(std::span<m3g::Object3D* const> roots);
 
 private:
@@ -121,6 +131,7 @@ private:
     }
     void addChild(int parent, int child) { nodes_[static_cast<std::size_t>(parent)]["children"].push_back(child); }
     int visit(m3g::Node& node, bool hidden, float alpha);
+    const ExportOptions options_;
     void setTrs(Json& node, const Trs& trs);
     void attachCamera(m3g::Camera& camera, int node);
     void attachLight(m3g::Light& light, int node);
@@ -598,7 +609,12 @@ ExportResult Exporter::run(std::span<m3g::Object3D* const> roots) {
 
     // Scenes: one per World (its children, plus an active camera outside
     // it), then the root nodes outside any World.
-    std::vector<std::pair<std::string, std::vector<m3g::Node*>>> scenes;
+    struct Scene {
+        std::string name;
+        std::vector<m3g::Node*> nodes;
+        Axis up = kUpY;
+    };
+    std::vector<Scene> scenes;
     for (m3g::Object3D* o : all) {
         auto* world = dynamic_cast<m3g::World*>(o);
         if (!world) continue;
@@ -611,22 +627,32 @@ ExportResult Exporter::run(std::span<m3g::Object3D* const> roots) {
         }
         if (world->getAnimationTrackCount() > 0 || !isIdentity(world->compositeTransform()))
             notes_.add("the World's own transform and animation are not applied (as in M3G rendering)");
-        scenes.emplace_back(nodeName(*world), std::move(nodes));
+        scenes.push_back({nodeName(*world), std::move(nodes), options_.up ? *options_.up : sceneUp(*world)});
     }
     std::vector<m3g::Node*> loose;
     for (m3g::Object3D* o : all) {
         auto* node = dynamic_cast<m3g::Node*>(o);
         if (!node || node->getParent() || dynamic_cast<m3g::World*>(node)) continue;
         bool placed = false;
-        for (const auto& s : scenes) placed = placed || std::find(s.second.begin(), s.second.end(), node) != s.second.end();
+        for (const auto& s : scenes) placed = placed || std::find(s.nodes.begin(), s.nodes.end(), node) != s.nodes.end();
         if (!placed) loose.push_back(node);
     }
-    if (!loose.empty()) scenes.emplace_back(scenes.empty() ? "scene" : "nodes outside the World", std::move(loose));
+    if (!loose.empty())
+        scenes.push_back({scenes.empty() ? "scene" : "nodes outside the World", std::move(loose), options_.up.value_or(kUpY)});
 
-    for (const auto& [name, rootNodes] : scenes) {
+    for (const Scene& scene : scenes) {
         Json sceneNodes = Json::array();
-        for (m3g::Node* n : rootNodes) sceneNodes.push_back(visit(*n, false, 1.0f));
-        doc_.add("scenes", {{"name", name}, {"nodes", sceneNodes}});
+        for (m3g::Node* n : scene.nodes) sceneNodes.push_back(visit(*n, false, 1.0f));
+        if (scene.up != kUpY) {
+            // glTF is +Y up: one root node turns the scene's up onto +Y.
+            const int upright = newNode({{"name", "M3G " + axisName(scene.up) + " up to glTF +Y"},
+                                         {"rotation", uprightRotation(scene.up)},
+                                         {"children", sceneNodes}});
+            sceneNodes = Json::array({upright});
+            notes_.add("the scene's up axis is " + axisName(scene.up) +
+                       " (its active camera's up): a root node turns it to glTF's +Y");
+        }
+        doc_.add("scenes", {{"name", scene.name}, {"nodes", sceneNodes}});
     }
     for (const MeshJob& job : meshes_) exportMesh(job);
     exportAnimations(all);
@@ -656,8 +682,8 @@ ExportResult Exporter::run(std::span<m3g::Object3D* const> roots) {
 
 }  // namespace
 
-ExportResult exportScene(std::span<m3g::Object3D* const> roots) {
-    Exporter exporter;
+ExportResult exportScene(std::span<m3g::Object3D* const> roots, const ExportOptions& options) {
+    Exporter exporter(options);
     return exporter.run(roots);
 }
 

@@ -5,11 +5,13 @@
 // on the public API plus the keyframe sampler of scene/.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "GltfDocument.h"
+#include "UpAxis.h"
 
 namespace m3g {
 class Object3D;
@@ -23,12 +25,19 @@ struct ExportResult {
     std::vector<std::string> warnings;
 };
 
+struct ExportOptions {
+    /// The scene's up axis; nullopt: each World's own (UpAxis.h, the active
+    /// camera's up). glTF is +Y up: a scene whose up is another axis is
+    /// placed under a root node that turns it upright.
+    std::optional<Axis> up;
+};
+
 /// Exports the scene reachable from `roots` (a Loader result): every World
 /// becomes a glTF scene (the World's own transform is not applied, as in
 /// M3G rendering; an active camera outside it is added as a root), root
 /// nodes outside any World a further scene. Object state is taken as it is
 /// now (animate() the roots first for a given time).
-ExportResult exportScene(std::span<m3g::Object3D* const> roots);
+ExportResult exportScene(std::span<m3g::Object3D* const> roots, const ExportOptions& options = {});
 
 /// Writes `result` to `path`: .glb (binary container) or .gltf (JSON; the
 /// buffer as a data: URI, or with `separateBin` in PATH-without-extension.bin

@@ -1,5 +1,7 @@
 #include "SceneRender.h"
 
+#include "UpAxis.h"
+
 #include <stdexcept>
 #include <vector>
 
@@ -43,7 +45,11 @@ void overrideBackground(World& world, std::uint32_t argb) {
 }
 
 CameraOrbit::CameraOrbit(Camera& camera, World& world, const std::array<float, 3>& center)
-    : camera_(&camera), center_(center) {
+    : CameraOrbit(camera, world, center, sceneUp(world)) {}
+
+CameraOrbit::CameraOrbit(Camera& camera, World& world, const std::array<float, 3>& center,
+                         const std::array<float, 3>& up)
+    : camera_(&camera), center_(center), up_(up) {
     if (!camera.getTransformTo(&world, &cameraToWorld_))
         throw std::invalid_argument("CameraOrbit: the camera is not in the World");
     if (Node* parent = camera.getParent().get()) {
@@ -56,7 +62,7 @@ void CameraOrbit::setAngle(float degrees) {
     if (degrees == 0.0f && !moved_) return;
     Transform local = worldToParent_;
     local.postTranslate(center_[0], center_[1], center_[2]);
-    local.postRotate(degrees, 0.0f, 1.0f, 0.0f);
+    local.postRotate(degrees, up_[0], up_[1], up_[2]);
     local.postTranslate(-center_[0], -center_[1], -center_[2]);
     local.postMultiply(&cameraToWorld_);
     camera_->setTranslation(0.0f, 0.0f, 0.0f);

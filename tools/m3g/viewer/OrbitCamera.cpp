@@ -1,5 +1,7 @@
 #include "OrbitCamera.h"
 
+#include "UpAxis.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -37,6 +39,8 @@ void OrbitCamera::zoom(float steps) { distance = std::max(distance * std::pow(0.
 m3g::Transform OrbitCamera::transform() const {
     m3g::Transform t;
     t.postTranslate(target[0], target[1], target[2]);
+    const m3g::Transform basis = m3gcli::upFromY(up);  // +Y to the scene's up
+    t.postMultiply(&basis);
     t.postRotate(yaw, 0.0f, 1.0f, 0.0f);
     t.postRotate(-pitch, 1.0f, 0.0f, 0.0f);
     t.postTranslate(0.0f, 0.0f, distance);

@@ -1,5 +1,7 @@
 // The viewer's orbit/pan/zoom camera: a point it looks at, a distance, and
-// yaw/pitch around the world's Y axis (M3G cameras look down their -Z).
+// yaw/pitch around the scene's up axis (+Y, or +Z for many real files:
+// UpAxis.h), so a model stays upright as it turns (M3G cameras look down
+// their -Z).
 // Pure math, so it is unit-tested without a window.
 #pragma once
 
@@ -33,10 +35,12 @@ public:
 
     std::array<float, 3> target{0.0f, 0.0f, 0.0f};
     float distance = 5.0f;
-    float yaw = 30.0f;    ///< degrees about +Y
+    float yaw = 30.0f;    ///< degrees about `up`
     float pitch = 20.0f;  ///< degrees above the horizon
     float fovy = 45.0f;
     float radius = 1.0f;
+    /// The axis yaw turns about and pitch lifts towards (a unit axis).
+    std::array<float, 3> up{0.0f, 1.0f, 0.0f};
 };
 
 }  // namespace m3gview

@@ -1,5 +1,7 @@
 #include "ViewerScene.h"
 
+#include "UpAxis.h"
+
 #include <algorithm>
 
 namespace m3gview {
@@ -87,6 +89,9 @@ void ViewerScene::setup(int width, int height) {
         autoCamera_ = true;
     }
 
+    // The orbit turns about the scene's up, read from the file's view
+    // before the orbit camera exists (UpAxis.h).
+    orbit_.up = m3gcli::sceneUp(w);
     orbitCamera_ = Ref<Camera>(new Camera());
     w.addChild(orbitCamera_.get());
     headlight_ = Ref<Light>(new Light());
