@@ -57,7 +57,11 @@ inline void requireArray(jarray array, const char* where) {
 template <class J>
 std::vector<typename ArrayTraits<J>::Element> copyIn(JNIEnv* env, J array, const char* where) {
     requireArray(array, where);
-    std::vector<typename ArrayTraits<J>::Element> out(static_cast<std::size_t>(env->GetArrayLength(array)));
+    std::vector<typename ArrayTraits<J>::Element> out;
+    // A zero-length Java array must stay non-null for m3g-vk (whose span
+    // with a null data() means a Java null): capacity first.
+    out.reserve(1);
+    out.resize(static_cast<std::size_t>(env->GetArrayLength(array)));
     ArrayTraits<J>::get(env, array, static_cast<jsize>(out.size()), out.data());
     return out;
 }
@@ -73,6 +77,7 @@ class ArrayOut {
 public:
     ArrayOut(JNIEnv* env, J array, const char* where, bool copyIn = false) : env_(env), array_(array) {
         requireArray(array, where);
+        data_.reserve(1);  // non-null data() for a zero-length array (see copyIn)
         data_.resize(static_cast<std::size_t>(env->GetArrayLength(array)));
         if (copyIn) ArrayTraits<J>::get(env, array, static_cast<jsize>(data_.size()), data_.data());
     }
