@@ -641,3 +641,46 @@ TEST(ObjectDump, TreeLines) {
               "  (skeleton) Group #4 children=1\n"
               "    Group #5 children=0 bone\n");
 }
+
+// One numbering for `m3g info` and the viewer's panels: a sub-object dumped
+// with the file's roots as numbering roots keeps the ids of the whole dump,
+// and an object outside the numbering follows its last id.
+TEST(ObjectDump, NumberingRootsKeepTheFilesIds) {
+    Ref<World> world(new World());
+    Ref<Group> group(new Group());
+    Ref<Camera> camera(new Camera());
+    Ref<Light> light(new Light());
+    group->addChild(camera.get());
+    group->addChild(light.get());
+    world->addChild(group.get());
+    world->setActiveCamera(camera.get());
+    Object3D* roots[] = {world.get()};
+    const json whole = json::parse(dumpJson(roots));
+    const m3gcli::ObjectNumbering numbering(roots);
+    for (const auto& o : whole["objects"]) {
+        const int id = o["id"];
+        EXPECT_GE(id, 0);
+    }
+    EXPECT_EQ(numbering.id(world.get()), 0);
+    const int groupId = numbering.id(group.get()), lightId = numbering.id(light.get());
+    EXPECT_GT(groupId, 0);
+    EXPECT_EQ(numbering.label(*light), "Light #" + std::to_string(lightId));
+
+    m3gcli::DumpOptions options;
+    options.numberingRoots = {world.get()};
+    Object3D* sub[] = {group.get()};
+    const json part = json::parse(dumpJson(sub, options));
+    EXPECT_EQ(part["roots"][0], groupId);
+    EXPECT_EQ(part["objects"][0]["id"], groupId);
+    bool sawLight = false;
+    for (const auto& r : part["objects"][0]["children"]) sawLight = sawLight || r == lightId;
+    EXPECT_TRUE(sawLight) << part["objects"][0].dump();
+
+    // Outside the numbering (a viewer's own light): after the last id, no "#" label.
+    Ref<Light> own(new Light());
+    EXPECT_EQ(numbering.id(own.get()), -1);
+    EXPECT_EQ(numbering.label(*own), "Light");
+    Object3D* ownRoot[] = {own.get()};
+    const json outside = json::parse(dumpJson(ownRoot, options));
+    EXPECT_EQ(outside["objects"][0]["id"], static_cast<int>(whole["objects"].size()));
+}

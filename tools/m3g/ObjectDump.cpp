@@ -694,9 +694,32 @@ std::vector<Object3D*> collectObjects(std::span<Object3D* const> roots) {
     return order;
 }
 
+ObjectNumbering::ObjectNumbering(std::span<Object3D* const> roots) {
+    const std::vector<Object3D*> objects = collectObjects(roots);
+    for (std::size_t i = 0; i < objects.size(); ++i) ids_.emplace(objects[i], static_cast<int>(i));
+}
+
+int ObjectNumbering::id(const Object3D* object) const {
+    const auto it = ids_.find(object);
+    return it == ids_.end() ? -1 : it->second;
+}
+
+std::string ObjectNumbering::label(const Object3D& object) const {
+    const int n = id(&object);
+    return n < 0 ? std::string(object.getClassName()) : std::string(object.getClassName()) + " #" + std::to_string(n);
+}
+
 std::string dumpJson(std::span<Object3D* const> roots, const DumpOptions& options) {
     const std::vector<Object3D*> objects = collectObjects(roots);
-    const IdMap ids = makeIds(objects);
+    IdMap ids = makeIds(objects);
+    if (!options.numberingRoots.empty()) {
+        // The file's numbering; what lies outside it follows its last id.
+        IdMap numbered = makeIds(collectObjects(options.numberingRoots));
+        int next = static_cast<int>(numbered.size());
+        for (Object3D* o : objects)
+            if (!numbered.count(o)) numbered.emplace(o, next++);
+        ids = std::move(numbered);
+    }
     const Dumper dumper{ids, options};
 
     Json doc = Json::object();

@@ -30,6 +30,24 @@ struct DumpOptions {
     /// If set, AnimationControllers also report getPosition() and isActive()
     /// at this world time (what `m3g info --time T` animated to).
     std::optional<int> worldTime;
+    /// Numbering roots: when set, ids are those of the objects reachable from
+    /// these (the whole file: `m3g info`'s "#id", the viewer's panels), while
+    /// only what is reachable from the dumped roots is written. Objects outside
+    /// the numbering (e.g. a viewer's own camera) get ids after its last.
+    std::vector<m3g::Object3D*> numberingRoots;
+};
+
+/// Where an object is in `m3g info`'s numbering of the objects reachable
+/// from `roots` (see above); -1 if it is not reachable from them.
+class ObjectNumbering {
+public:
+    explicit ObjectNumbering(std::span<m3g::Object3D* const> roots);
+    int id(const m3g::Object3D* object) const;
+    /// "Class #id", as `m3g info`'s tree prints it ("Class" alone outside the numbering).
+    std::string label(const m3g::Object3D& object) const;
+
+private:
+    std::map<const m3g::Object3D*, int> ids_;
 };
 
 /// Every reachable object once, in id order (see above). Null roots are skipped.

@@ -68,7 +68,16 @@ ViewerScene::ViewerScene(std::string name, LoadResult loaded, int width, int hei
     setup(width, height);
 }
 
+std::vector<Object3D*> ViewerScene::roots() const {
+    std::vector<Object3D*> out;
+    for (const auto& r : loaded_.roots) out.push_back(r.get());
+    return out;
+}
+
 void ViewerScene::setup(int width, int height) {
+    // Numbered before the viewer adds its own camera and light, as `m3g info` numbers the file.
+    const std::vector<Object3D*> fileRoots = roots();
+    numbering_ = std::make_unique<m3gcli::ObjectNumbering>(fileRoots);
     const bool image = loaded_.versionMajor == 0 && !loaded_.objects.empty() &&
                        dynamic_cast<Image2D*>(loaded_.objects.front().get()) != nullptr;
     prepared_ = image ? imageScene(loaded_) : m3gcli::prepareScene(loaded_, width, height);

@@ -6,11 +6,13 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <m3g/m3g.h>
 
+#include "ObjectDump.h"
 #include "OrbitCamera.h"
 #include "SceneSetup.h"
 
@@ -31,6 +33,10 @@ public:
     const std::string& name() const noexcept { return name_; }
     m3g::World& world() const noexcept { return *prepared_.world; }
     const m3g::LoadResult& loaded() const noexcept { return loaded_; }
+    /// The file's objects numbered as `m3g info` numbers them ("#id").
+    const m3gcli::ObjectNumbering& numbering() const noexcept { return *numbering_; }
+    /// The file's root objects (the numbering's roots).
+    std::vector<m3g::Object3D*> roots() const;
     const m3gcli::PreparedScene& prepared() const noexcept { return prepared_; }
     const SceneStats& stats() const noexcept { return stats_; }
     const std::vector<m3g::Ref<m3g::Camera>>& cameras() const noexcept { return cameras_; }
@@ -76,6 +82,7 @@ private:
 
     std::string name_;
     m3g::LoadResult loaded_;
+    std::unique_ptr<m3gcli::ObjectNumbering> numbering_;
     m3gcli::PreparedScene prepared_;
     SceneStats stats_;
     std::vector<m3g::Ref<m3g::Camera>> cameras_;

@@ -51,12 +51,13 @@ bool beginPanel(const char* name, float x, float y, float w, float h) {
     return ImGui::Begin(name);
 }
 
-std::string label(const Object3D& o) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "%s##%llu", o.getClassName(), static_cast<unsigned long long>(o.getObjectId()));
-    std::string s = buf;
-    if (o.getUserID() != 0) s = std::string(o.getClassName()) + " #" + std::to_string(o.getUserID()) + s.substr(s.find("##"));
-    return s;
+// "Class #id userID=N" with the ids of `m3g info` (one numbering in the
+// tool, the tree, the object list and the properties); ImGui's unique part
+// after "##".
+std::string label(const ViewerState& state, const Object3D& o) {
+    std::string s = state.scene->numbering().label(o);
+    if (o.getUserID() != 0) s += " userID=" + std::to_string(o.getUserID());
+    return s + "##" + std::to_string(o.getObjectId());
 }
 
 void sceneTree(ViewerState& state, Node& node) {
@@ -70,7 +71,7 @@ void sceneTree(ViewerState& state, Node& node) {
     ImGui::PushID(static_cast<int>(node.getObjectId()));
     if (ImGui::Checkbox("##visible", &visible)) node.setRenderingEnable(visible);
     ImGui::SameLine();
-    const bool open = ImGui::TreeNodeEx(label(node).c_str(), flags);
+    const bool open = ImGui::TreeNodeEx(label(state, node).c_str(), flags);
     if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) state.selected = &node;
     if (open) {
         if (group)
@@ -122,6 +123,7 @@ void properties(ViewerState& state) {
     Object3D* root = state.selected;
     if (cache.id != root->getObjectId() || cache.revision != root->getRevision() || cache.time != state.timeMs) {
         m3gcli::DumpOptions options;
+        options.numberingRoots = state.scene->roots();  // ids as `m3g info` gives them
         options.maxVertices = 8;
         options.maxIndices = 24;
         options.maxKeyframes = 8;
@@ -229,9 +231,8 @@ void objectsInFileOrder(ViewerState& state) {
         ImGui::End();
         return;
     }
-    int index = 1;
     for (const auto& o : state.scene->loaded().objects) {
-        const std::string text = std::to_string(index++) + " " + label(*o);
+        const std::string text = label(state, *o);
         if (ImGui::Selectable(text.c_str(), state.selected == o.get())) state.selected = o.get();
     }
     ImGui::End();
@@ -261,7 +262,7 @@ void statsAndDebug(ViewerState& state) {
     if (ImGui::BeginCombo("camera", current.c_str())) {
         if (ImGui::Selectable("orbit (viewer)", scene.cameraIndex() < 0)) scene.useCamera(-1);
         for (int i = 0; i < static_cast<int>(scene.cameras().size()); ++i)
-            if (ImGui::Selectable(("camera " + std::to_string(i) + " " + label(*scene.cameras()[i])).c_str(),
+            if (ImGui::Selectable(("camera " + std::to_string(i) + " " + label(state, *scene.cameras()[i])).c_str(),
                                   scene.cameraIndex() == i))
                 scene.useCamera(i);
         ImGui::EndCombo();
