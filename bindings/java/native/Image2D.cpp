@@ -110,3 +110,14 @@ M3G_JNI(jint, Image2D, getWidth)(JNIEnv* env, jobject thiz) {
 M3G_JNI(jint, Image2D, getHeight)(JNIEnv* env, jobject thiz) {
     return guard(env, [&] { return self<Image2D>(env, thiz)->getHeight(); });
 }
+
+M3G_JNI(jbyteArray, Image2D, nativePixels)(JNIEnv* env, jobject thiz) {
+    return guard(env, [&]() -> jbyteArray {
+        const std::span<const std::uint8_t> pixels = self<Image2D>(env, thiz)->pixels();
+        jbyteArray out = env->NewByteArray(static_cast<jsize>(pixels.size()));
+        if (out && !pixels.empty())
+            env->SetByteArrayRegion(out, 0, static_cast<jsize>(pixels.size()),
+                                    reinterpret_cast<const jbyte*>(pixels.data()));
+        return out;
+    });
+}

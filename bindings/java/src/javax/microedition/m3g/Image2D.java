@@ -76,4 +76,7 @@ public class Image2D extends Object3D {
     public native int getWidth();
 
     public native int getHeight();
+
+    /** The pixels as stored, palette resolved (tests; JSR-184 has no getter). */
+    native byte[] nativePixels();
 }
