@@ -55,6 +55,21 @@ public class MeshTest {
     }
 
     @Test
+    public void manySubmeshes() {
+        // More elements than a native method's local reference frame holds (-Xcheck:jni warns past it).
+        IndexBuffer[] submeshes = new IndexBuffer[200];
+        Appearance[] appearances = new Appearance[200];
+        for (int i = 0; i < 200; ++i) {
+            submeshes[i] = strip();
+            appearances[i] = new Appearance();
+        }
+        Mesh m = new Mesh(vertexBuffer(4), submeshes, appearances);
+        assertEquals(200, m.getSubmeshCount());
+        assertSame(submeshes[199], m.getIndexBuffer(199));
+        assertSame(appearances[123], m.getAppearance(123));
+    }
+
+    @Test
     public void setAppearance() {
         Mesh m = new Mesh(vertexBuffer(4), new IndexBuffer[] {strip(), strip()}, null);
         Appearance a = new Appearance();
