@@ -21,17 +21,20 @@ std::size_t bytesFor(jint format, jint width, jint height) {
     return elementsFor({width, height, Image2D::bytesPerPixel(format)});
 }
 
-// Rec. 601 luma of an ARGB pixel, rounded: what lcdui-based implementations
-// store for LUMINANCE (and for ALPHA from an image without alpha).
+// The luminance of an ARGB pixel as Nokia's M3G implementation (reference)
+// computes it when an Image2D is made from an lcdui Image: Rec. 601 weights
+// in 16-bit fixed point (0x4CB2, 0x9691, 0x1D3E, summing to a little over
+// 1.0 so that white stays 255), truncated.
 std::uint8_t luminance(std::uint32_t argb) {
     const std::uint32_t r = (argb >> 16) & 0xFFu, g = (argb >> 8) & 0xFFu, b = argb & 0xFFu;
-    return static_cast<std::uint8_t>((299u * r + 587u * g + 114u * b + 500u) / 1000u);
+    return static_cast<std::uint8_t>((0x4CB2u * r + 0x9691u * g + 0x1D3Eu * b) >> 16);
 }
 
 // The pixels of `format` (bytesPerPixel(format) > 0) from ARGB ints. An
 // image without alpha gives ALPHA its luminance (opaque everywhere would be
-// useless as an alpha map), as JSR-184 implementations do for lcdui images
-// without alpha; its other formats take alpha 0xFF from getRGB.
+// useless as an alpha map), as Nokia's M3G implementation (reference) does
+// for lcdui images without alpha; its other formats take alpha 0xFF from
+// getRGB.
 std::vector<std::uint8_t> fromArgb(int format, std::span<const std::int32_t> argb, bool hasAlpha) {
     std::vector<std::uint8_t> out;
     out.reserve(argb.size() * static_cast<std::size_t>(Image2D::bytesPerPixel(format)));

@@ -39,7 +39,9 @@ M3G_JNI(jlong, SkinnedMesh, createSubmeshes)(JNIEnv* env, jclass, jobject vertic
 
 M3G_JNI(void, SkinnedMesh, addTransform)(JNIEnv* env, jobject thiz, jobject bone, jint weight, jint firstVertex,
                                          jint numVertices) {
-    guard(env, [&] { self<SkinnedMesh>(env, thiz)->addTransform(arg<Node>(env, bone), weight, firstVertex, numVertices); });
+    guard(env, [&] {
+        self<SkinnedMesh>(env, thiz)->addTransform(arg<Node>(env, bone), weight, firstVertex, numVertices);
+    });
 }
 
 M3G_JNI(jobject, SkinnedMesh, getSkeleton)(JNIEnv* env, jobject thiz) {

@@ -167,9 +167,10 @@ public class Image2DTest {
         argb.setRGB(0, 1, 0xFF0000FF);
         byte h = (byte) 0x80;
         byte f = (byte) 0xFF;
-        byte lr = 76;   // Rec. 601: 0.299 * 255
-        byte lg = (byte) 150;  // 0.587 * 255
-        byte lb = 29;   // 0.114 * 255
+        // Luminance as Nokia's M3G implementation computes it (16-bit fixed-point Rec. 601, truncated).
+        byte lr = 76;          // 0x4CB2 * 255 >> 16
+        byte lg = (byte) 149;  // 0x9691 * 255 >> 16
+        byte lb = 29;          // 0x1D3E * 255 >> 16
         assertArrayEquals(new byte[] {f, 0, 0, h, 0, f, 0, f, 0, 0, f, f, 0, 0, 0, 0},
                 new Image2D(Image2D.RGBA, argb).nativePixels());
         assertArrayEquals(new byte[] {f, 0, 0, 0, f, 0, 0, 0, f, 0, 0, 0},

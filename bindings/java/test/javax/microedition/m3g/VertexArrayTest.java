@@ -8,7 +8,10 @@ import static org.junit.Assert.assertTrue;
 
 import org.junit.Test;
 
-/** JSR-184 1.1 VertexArray: construction, set/get of bytes and shorts, copies, and the exceptions the specification lists. */
+/**
+ * JSR-184 1.1 VertexArray: construction, set/get of bytes and shorts, copies,
+ * and the exceptions the specification lists.
+ */
 public class VertexArrayTest {
     @Test
     public void constructorAndDefaults() {
