@@ -129,6 +129,25 @@ public class MeshTest {
     }
 
     @Test
+    public void peersForObjectsOnlyTheMeshHolds() throws InterruptedException {
+        // The first peers may be collected; the getters then make new ones of the right classes.
+        Mesh m = new Mesh(vertexBuffer(4), strip(), new Appearance());
+        for (int i = 0; i < 3; ++i) {
+            System.gc();
+            Thread.sleep(10);
+        }
+        VertexBuffer vb = m.getVertexBuffer();
+        assertEquals(4, vb.getVertexCount());
+        VertexArray positions = vb.getPositions(null);
+        assertEquals(3, positions.getComponentCount());
+        IndexBuffer ib = m.getIndexBuffer(0);
+        assertTrue(ib instanceof TriangleStripArray);
+        assertEquals(6, ib.getIndexCount());
+        assertEquals(0, m.getAppearance(0).getLayer());
+        assertSame(vb, m.getVertexBuffer());
+    }
+
+    @Test
     public void referencesKeepTheirPeers() {
         // Objects reached only through the mesh come back as the same Java objects.
         Mesh m = new Mesh(vertexBuffer(4), strip(), new Appearance());

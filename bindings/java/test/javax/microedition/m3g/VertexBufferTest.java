@@ -123,6 +123,14 @@ public class VertexBufferTest {
         // Replacing the only array may change the count.
         vb.setPositions(positions(6), 1f, null);
         assertEquals(6, vb.getVertexCount());
+        // Not once there is another.
+        vb.setNormals(new VertexArray(6, 3, 1));
+        assertThrowsExactly(IllegalArgumentException.class, () -> vb.setPositions(positions(4), 1f, null));
+        assertEquals(6, vb.getVertexCount());
+        // Every array removed: no count left.
+        vb.setPositions(null, 1f, null);
+        vb.setNormals(null);
+        assertEquals(0, vb.getVertexCount());
     }
 
     @Test
