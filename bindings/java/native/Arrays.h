@@ -70,16 +70,16 @@ inline std::vector<float> floatsIn(JNIEnv* env, jfloatArray array, const char* w
 }
 
 /// A native copy of a Java array that the call writes into, copied back by
-/// commit() (after the call succeeded). NPE for null; with `copyIn` it starts
-/// with the array's values.
+/// commit() (after the call succeeded). NPE for null. It starts with the
+/// array's values, so elements the call does not write come back unchanged.
 template <class J>
 class ArrayOut {
 public:
-    ArrayOut(JNIEnv* env, J array, const char* where, bool copyIn = false) : env_(env), array_(array) {
+    ArrayOut(JNIEnv* env, J array, const char* where) : env_(env), array_(array) {
         requireArray(array, where);
         data_.reserve(1);  // non-null data() for a zero-length array (see copyIn)
         data_.resize(static_cast<std::size_t>(env->GetArrayLength(array)));
-        if (copyIn) ArrayTraits<J>::get(env, array, static_cast<jsize>(data_.size()), data_.data());
+        ArrayTraits<J>::get(env, array, static_cast<jsize>(data_.size()), data_.data());
     }
     std::span<typename ArrayTraits<J>::Element> span() noexcept { return data_; }
     void commit() { ArrayTraits<J>::set(env_, array_, static_cast<jsize>(data_.size()), data_.data()); }

@@ -19,6 +19,8 @@ void throwJava(JNIEnv* env, const char* cls, const std::string& message) {
 void rethrowAsJava(JNIEnv* env) noexcept {
     try {
         throw;
+    } catch (const JavaExceptionPending&) {
+        // Already thrown in Java.
     } catch (const m3g::NullPointerException& e) {
         throwJava(env, "java/lang/NullPointerException", e.what());
     } catch (const m3g::IllegalArgumentException& e) {

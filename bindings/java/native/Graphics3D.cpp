@@ -90,8 +90,11 @@ M3G_JNI(void, Graphics3D, fillProperties)(JNIEnv* env, jclass, jobject table) {
                 v = env->CallStaticObjectMethod(integerClass, integerOf, static_cast<jint>(*i));
             else
                 v = env->NewStringUTF(std::get<std::string>(value).c_str());
+            if (env->ExceptionCheck()) return;  // out of memory: the Java exception stands
             jstring key = env->NewStringUTF(name.c_str());
-            env->DeleteLocalRef(env->CallObjectMethod(table, put, key, v));
+            jobject previous = key ? env->CallObjectMethod(table, put, key, v) : nullptr;
+            if (env->ExceptionCheck()) return;
+            env->DeleteLocalRef(previous);
             env->DeleteLocalRef(key);
             env->DeleteLocalRef(v);
         }

@@ -23,6 +23,10 @@
 
 namespace m3gjni {
 
+/// Thrown by native code when a JNI call left a Java exception pending (an
+/// OutOfMemoryError, a class that failed to load): guard() lets that one stand.
+struct JavaExceptionPending {};
+
 /// A pending Java exception of class `cls` ("java/lang/IllegalArgumentException").
 void throwJava(JNIEnv* env, const char* cls, const std::string& message);
 

@@ -72,9 +72,9 @@ jobject peer(JNIEnv* env, m3g::Object3D* object) {
         auto it = gClasses.find(name);
         if (it == gClasses.end()) {
             jclass local = env->FindClass(("javax/microedition/m3g/" + name).c_str());
-            if (!local) return nullptr;  // NoClassDefFoundError pending
+            if (!local) throw JavaExceptionPending{};  // NoClassDefFoundError
             jmethodID ctor = env->GetMethodID(local, "<init>", "(J)V");
-            if (!ctor) return nullptr;
+            if (!ctor) throw JavaExceptionPending{};
             it = gClasses.emplace(name, std::make_pair(static_cast<jclass>(env->NewGlobalRef(local)), ctor)).first;
             env->DeleteLocalRef(local);
         }
@@ -82,7 +82,10 @@ jobject peer(JNIEnv* env, m3g::Object3D* object) {
     }
     object->addRef();  // the new peer's reference
     jobject p = env->NewObject(cls.first, cls.second, static_cast<jlong>(reinterpret_cast<std::intptr_t>(object)));
-    if (!p) object->release();
+    if (!p) {
+        object->release();
+        throw JavaExceptionPending{};
+    }
     return p;
 }
 

@@ -51,7 +51,7 @@ private:
 class FloatsOutOrNull {
 public:
     FloatsOutOrNull(JNIEnv* env, jfloatArray array, const char* where) {
-        if (array) out_.emplace(env, array, where, true);
+        if (array) out_.emplace(env, array, where);
     }
     std::span<float> span() noexcept {
         if (!out_) return {};
@@ -69,7 +69,7 @@ private:
 /// null), present even when empty; starts with the array's values.
 class FloatsInOut {
 public:
-    FloatsInOut(JNIEnv* env, jfloatArray array, const char* where) : out_(env, array, where, true) {}
+    FloatsInOut(JNIEnv* env, jfloatArray array, const char* where) : out_(env, array, where) {}
     std::span<float> span() noexcept { return nonNull(out_.span()); }
     void commit() { out_.commit(); }
 

@@ -129,7 +129,7 @@ M3G_JNI(void, Transform, transform__Ljavax_microedition_m3g_VertexArray_2_3FZ)(J
 M3G_JNI(void, Transform, transform___3F)(JNIEnv* env, jobject thiz, jfloatArray vectors) {
     guard(env, [&] {
         const m3g::Transform t = transformOf(env, thiz, "Transform");
-        FloatsOut v(env, vectors, "Transform.transform", true);
+        FloatsOut v(env, vectors, "Transform.transform");
         t.transform(v.span());
         v.commit();
     });

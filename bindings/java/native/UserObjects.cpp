@@ -86,11 +86,16 @@ jobject hashtableOf(JNIEnv* env, const m3g::UserParameters& params) {
     jmethodID put = env->GetMethodID(table, "put", "(Ljava/lang/Object;Ljava/lang/Object;)Ljava/lang/Object;");
     jmethodID valueOf = env->GetStaticMethodID(integer, "valueOf", "(I)Ljava/lang/Integer;");
     jobject out = env->NewObject(table, ctor);
+    if (!out) return nullptr;
     for (const auto& [id, bytes] : params) {
         jbyteArray value = env->NewByteArray(static_cast<jsize>(bytes.size()));
+        if (!value) return nullptr;  // OutOfMemoryError pending
         env->SetByteArrayRegion(value, 0, static_cast<jsize>(bytes.size()), reinterpret_cast<const jbyte*>(bytes.data()));
         jobject key = env->CallStaticObjectMethod(integer, valueOf, static_cast<jint>(id));
-        env->DeleteLocalRef(env->CallObjectMethod(out, put, key, value));
+        if (env->ExceptionCheck()) return nullptr;
+        jobject previous = env->CallObjectMethod(out, put, key, value);
+        if (env->ExceptionCheck()) return nullptr;
+        env->DeleteLocalRef(previous);
         env->DeleteLocalRef(key);
         env->DeleteLocalRef(value);
     }
