@@ -8,61 +8,27 @@ import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertSame;
 import static org.junit.Assert.assertTrue;
 
-import java.lang.reflect.InvocationTargetException;
-import org.junit.Assume;
 import org.junit.Test;
 
 /**
  * JSR-184 1.1 SkinnedMesh: skeleton, bones, at-rest transforms, bone
  * vertices and the specified exceptions.
- *
- * Skeletons are Groups, whose constructor and addChild (and Transformable's
- * setTranslation) come with the Node/Group classes of the scene branch; they
- * are reached through reflection so that this test compiles either way, and
- * the tests that need them are skipped (assumption failures) while Group is
- * still a placeholder.
  */
 public class SkinnedMeshTest {
     private static final float EPS = 1e-6f;
 
-    private static Object construct(Class<?> type) {
-        try {
-            return type.getConstructor().newInstance();
-        } catch (NoSuchMethodException e) {
-            Assume.assumeNoException(type.getSimpleName() + "() is not written yet (scene branch)", e);
-            throw new AssertionError(e);
-        } catch (InvocationTargetException e) {
-            throw new AssertionError(e.getCause());
-        } catch (ReflectiveOperationException e) {
-            throw new AssertionError(e);
-        }
-    }
-
     private static Group group() {
-        return (Group) construct(Group.class);
-    }
-
-    private static void call(Object target, String name, Class<?>[] types, Object... args) {
-        try {
-            target.getClass().getMethod(name, types).invoke(target, args);
-        } catch (NoSuchMethodException e) {
-            Assume.assumeNoException(name + " is not written yet (scene branch)", e);
-        } catch (InvocationTargetException e) {
-            throw new AssertionError(e.getCause());
-        } catch (ReflectiveOperationException e) {
-            throw new AssertionError(e);
-        }
+        return new Group();
     }
 
     private static void addChild(Group parent, Node child) {
-        call(parent, "addChild", new Class<?>[] {Node.class}, child);
+        parent.addChild(child);
     }
 
     private static void setTranslation(Node node, float x, float y, float z) {
-        call(node, "setTranslation", new Class<?>[] {float.class, float.class, float.class}, x, y, z);
+        node.setTranslation(x, y, z);
     }
 
-    // ---- Without the scene branch ----
 
     @Test
     public void nullSkeleton() {
@@ -82,7 +48,7 @@ public class SkinnedMeshTest {
                 () -> new SkinnedMesh(vb, new IndexBuffer[] {strip(), strip()}, new Appearance[1], null));
     }
 
-    // ---- With Group (scene branch) ----
+    // ---- With skeletons ----
 
     @Test
     public void skeletonAndMeshParts() {
@@ -116,7 +82,7 @@ public class SkinnedMeshTest {
         new SkinnedMesh(vertexBuffer(4), strip(), null, used);
         assertThrowsExactly(IllegalArgumentException.class,
                 () -> new SkinnedMesh(vertexBuffer(4), strip(), null, used));
-        World world = (World) construct(World.class);
+        World world = new World();
         assertThrowsExactly(IllegalArgumentException.class,
                 () -> new SkinnedMesh(vertexBuffer(4), strip(), null, world));
     }
