@@ -78,7 +78,7 @@ TEST(RenderOptions, AllOptions) {
 }
 
 TEST(RenderOptions, Errors) {
-    EXPECT_NE(errorOf({"-o", "x.png"}).find("input is required"), std::string::npos);
+    EXPECT_NE(errorOf({"-o", "x.png"}).find("missing FILE|DIR|GAME.jar"), std::string::npos);
     EXPECT_NE(errorOf({"a.m3g", "-o", "x.png", "--frames", "3", "--turntable", "4"}).find("exclude each other"),
               std::string::npos);
     EXPECT_NE(errorOf({"a.m3g", "--frames", "3", "--reference", "r.png"}).find("--reference"), std::string::npos);

@@ -76,7 +76,16 @@ std::string describeParseError(CLI::App& root, const CLI::ParseError& e) {
         for (const CLI::App* c : commands) names.push_back(c->get_name());
         return "unknown command '" + left.front() + "'" + didYouMean(left.front(), names);
     }
-    return e.what();
+    // "b is required": an operand is known by its placeholder and meaning,
+    // as the usage shows it ("missing B.png (the second image...)").
+    const std::string what = e.what();
+    const std::string required = " is required";
+    if (what.ends_with(required)) {
+        const CLI::Option* o = leaf.get_option_no_throw(what.substr(0, what.size() - required.size()));
+        if (o && o->get_positional())
+            return "missing " + o->get_type_name() + " (" + o->get_description() + ")";
+    }
+    return what;
 }
 
 /// The usage of `app` alone (CLI11's help() would go on to a selected
