@@ -72,6 +72,9 @@ ViewArgs finish(const ViewFlags& f) {
     r.headlight = !f.noHeadlight;
     if (!r.screenshot.empty()) imageFormatFor(r.screenshot);  // refused before the window opens
     if (!r.script.empty()) requireInputFile(r.script);
+    // Before a window opens: a missing file or a folder is exit code 3 with
+    // its reason, not an error panel (files dropped later still get one).
+    if (!r.file.empty()) requireInputFile(r.file);
     if (!r.screenshot.empty() && r.frames < 0 && r.script.empty()) r.frames = 1;
     return r;
 }
