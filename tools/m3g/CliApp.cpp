@@ -101,7 +101,8 @@ std::string versionLine() { return std::string("m3g-vk ") + m3g::kVersionString;
 std::string exitCodesText() {
     return "Exit codes:\n"
            "  0  success\n"
-           "  1  a check said no: compare or render --reference over the limits, bench soak's verdict\n"
+           "  1  a check said no: compare or render --reference over the limits, bench soak's verdict,\n"
+           "     a view --script expect-pick\n"
            "  2  usage error: unknown command or option, missing or bad value\n"
            "  3  an input cannot be read or loaded (missing, a directory, malformed)\n"
            "  4  an output cannot be written\n"

@@ -13,7 +13,7 @@ namespace m3gcli {
 enum ExitCode : int {
     kExitOk = 0,
     /// A check said no: compare or render --reference over the limits,
-    /// bench soak's verdict.
+    /// bench soak's verdict, a viewer script's expect-pick.
     kExitMismatch = 1,
     /// The command line is wrong (unknown command or option, bad value).
     kExitUsage = 2,
