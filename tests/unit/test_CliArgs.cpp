@@ -1,4 +1,5 @@
-// tools/m3g/CliArgs: the m3g command line.
+// tools/m3g/CliArgs and CliApp: the values on the m3g command line, and how
+// CLI11's parse errors read (unknown names with a suggestion).
 #include <gtest/gtest.h>
 
 #include <initializer_list>
@@ -6,22 +7,38 @@
 #include <string_view>
 #include <vector>
 
+#include "CliApp.h"
 #include "CliArgs.h"
 
-using m3gcli::CliArgs;
 using m3gcli::CliError;
 
 namespace {
 
-CliArgs parse(std::initializer_list<std::string_view> args) {
-    const std::vector<std::string_view> v(args);
-    return m3gcli::parseCliArgs(std::span<const std::string_view>(v));
-}
+/// A small command line: `info [FILE] [--json] [--time T]` and `render FILE
+/// [-o OUT] [--size WxH]`.
+struct TestApp {
+    CLI::App root{"", "m3g"};
+    std::string file, time, out, size;
+    bool json = false;
+    TestApp() {
+        root.require_subcommand(0, 1);
+        root.set_version_flag("--version", "1.0");
+        CLI::App* info = root.add_subcommand("info");
+        info->add_option("file", file);
+        info->add_flag("--json", json);
+        info->add_option("--time", time);
+        CLI::App* render = root.add_subcommand("render");
+        render->add_option("file", file, "the scene")->type_name("FILE")->required();
+        render->add_option("-o,--output", out);
+        render->add_option("--size", size);
+    }
+};
 
 /// The CliError message of parsing `args`, or "" if it parses.
 std::string error(std::initializer_list<std::string_view> args) {
+    TestApp app;
     try {
-        parse(args);
+        m3gcli::parseArgs(app.root, std::vector<std::string>(args.begin(), args.end()));
     } catch (const CliError& e) {
         return e.what();
     }
@@ -30,73 +47,46 @@ std::string error(std::initializer_list<std::string_view> args) {
 
 }  // namespace
 
-TEST(CliArgs, Info) {
-    const CliArgs a = parse({"info", "scene.m3g"});
-    EXPECT_EQ(a.command, "info");
-    ASSERT_EQ(a.files.size(), 1u);
-    EXPECT_EQ(a.files[0], "scene.m3g");
-    EXPECT_FALSE(a.json);
-    EXPECT_FALSE(a.lenient);
-    EXPECT_FALSE(a.time.has_value());
-
-    const CliArgs b = parse({"info", "--json", "x.m3g", "--lenient", "--time", "1500"});
+TEST(CliApp, BothOptionValueForms) {
+    TestApp a;
+    m3gcli::parseArgs(a.root, {"render", "x.m3g", "--size=64x48", "-o", "out.png"});
+    EXPECT_EQ(a.file, "x.m3g");
+    EXPECT_EQ(a.size, "64x48");
+    EXPECT_EQ(a.out, "out.png");
+    TestApp b;
+    m3gcli::parseArgs(b.root, {"info", "--time", "-20", "--json", "x.m3g"});
+    EXPECT_EQ(b.time, "-20");  // a negative number is a value, not an option
     EXPECT_TRUE(b.json);
-    EXPECT_TRUE(b.lenient);
-    ASSERT_TRUE(b.time.has_value());
-    EXPECT_EQ(*b.time, 1500);
-    EXPECT_EQ(b.files, std::vector<std::string>{"x.m3g"});
-
-    EXPECT_EQ(*parse({"info", "--time=-20", "x.m3g"}).time, -20);
-    EXPECT_EQ(*parse({"info", "x.m3g", "--time", "+7"}).time, 7);
-    EXPECT_TRUE(parse({"info"}).files.empty());  // library information
+    TestApp c;
+    m3gcli::parseArgs(c.root, {"info", "--", "--json"});
+    EXPECT_EQ(c.file, "--json");
+    EXPECT_FALSE(c.json);
 }
 
-TEST(CliArgs, Convert) {
-    const CliArgs a = parse({"convert", "in.m3g", "out.m3g", "--compress"});
-    EXPECT_EQ(a.command, "convert");
-    EXPECT_EQ(a.files, (std::vector<std::string>{"in.m3g", "out.m3g"}));
-    EXPECT_TRUE(a.compress);
-    EXPECT_FALSE(a.lenient);
-    EXPECT_TRUE(parse({"convert", "--lenient", "a", "b"}).lenient);
-}
-
-TEST(CliArgs, OperandsAfterDoubleDashAndStdin) {
-    const CliArgs a = parse({"info", "--", "--json"});
-    EXPECT_FALSE(a.json);
-    EXPECT_EQ(a.files, std::vector<std::string>{"--json"});
-    EXPECT_EQ(parse({"info", "-"}).files, std::vector<std::string>{"-"});
-}
-
-TEST(CliArgs, Help) {
-    EXPECT_EQ(parse({"help"}).command, "help");
-    EXPECT_EQ(parse({"--help"}).command, "help");
-    EXPECT_EQ(parse({"info", "x", "-h"}).command, "help");
-    EXPECT_EQ(parse({"version"}).command, "version");
-    EXPECT_NE(m3gcli::usageText().find("convert IN OUT"), std::string::npos);
-}
-
-TEST(CliArgs, Errors) {
-    EXPECT_EQ(error({}), "no command given");
+TEST(CliApp, UnknownNamesGetASuggestion) {
+    EXPECT_EQ(error({"rendr"}), "unknown command 'rendr'; did you mean 'render'?");
     EXPECT_EQ(error({"frobnicate"}), "unknown command 'frobnicate'");
-    EXPECT_EQ(error({"--json"}), "expected a command before option '--json'");
-    EXPECT_EQ(error({"info", "x", "--jsn"}), "unknown option '--jsn'");
-    EXPECT_EQ(error({"info", "x", "-j"}), "unknown option '-j'");
-    EXPECT_EQ(error({"info", "x", "--time"}), "option --time needs a value (world time in ms)");
-    EXPECT_EQ(error({"info", "x", "--time", "abc"}),
-              "option --time expects an integer (world time in ms), got 'abc'");
-    EXPECT_EQ(error({"info", "x", "--time", "12ms"}),
-              "option --time expects an integer (world time in ms), got '12ms'");
-    EXPECT_EQ(error({"info", "x", "--time="}), "option --time expects an integer (world time in ms), got ''");
-    EXPECT_EQ(error({"info", "x", "--time", "99999999999"}),
-              "option --time expects an integer (world time in ms), got '99999999999'");
-    EXPECT_EQ(error({"info", "x", "--time", "1", "--time", "2"}), "option --time given more than once");
-    EXPECT_EQ(error({"info", "x", "--json=yes"}), "option --json takes no value");
-    EXPECT_EQ(error({"info", "x", "--compress"}), "option --compress does not apply to 'info'");
-    EXPECT_EQ(error({"convert", "a", "b", "--json"}), "option --json does not apply to 'convert'");
-    EXPECT_EQ(error({"info", "a", "b"}), "unexpected argument 'b' for 'info'");
-    EXPECT_EQ(error({"convert"}), "convert needs an input and an output file");
-    EXPECT_EQ(error({"convert", "a"}), "convert needs an output file");
-    EXPECT_EQ(error({"version", "x"}), "unexpected argument 'x' for 'version'");
+    EXPECT_EQ(error({"render", "x.m3g", "--szie", "64x48"}), "unknown option '--szie'; did you mean '--size'?");
+    EXPECT_EQ(error({"render", "x.m3g", "--szie=64x48"}), "unknown option '--szie'; did you mean '--size'?");
+    EXPECT_EQ(error({"info", "x", "--jsn"}), "unknown option '--jsn'; did you mean '--json'?");
+    EXPECT_EQ(error({"--verison"}), "unknown option '--verison'; did you mean '--version'?");
+    // The unknown option is named even when a required operand is missing too.
+    EXPECT_EQ(error({"render", "--szie", "1x1"}), "unknown option '--szie'; did you mean '--size'?");
+}
+
+TEST(CliApp, OtherParseErrors) {
+    EXPECT_EQ(error({"info", "a", "b"}), "unexpected argument 'b'");
+    EXPECT_EQ(error({"render"}), "missing FILE (the scene)");
+    EXPECT_NE(error({"info", "x", "--time"}).find("--time"), std::string::npos);
+    EXPECT_EQ(error({"info", "x"}), "");
+}
+
+TEST(CliApp, ExitCodesAreListed) {
+    const std::string text = m3gcli::exitCodesText();
+    for (const char* code : {"  0  ", "  1  ", "  2  ", "  3  ", "  4  ", "  5  "})
+        EXPECT_NE(text.find(code), std::string::npos) << code;
+    EXPECT_EQ(m3gcli::kExitInput, 3);
+    EXPECT_EQ(m3gcli::kExitOutput, 4);
 }
 
 TEST(CliArgs, ParseInt) {
@@ -123,9 +113,33 @@ TEST(CliArgs, ParseSize) {
     }
 }
 
-TEST(CliArgs, ArgvOverload) {
-    const char* argv[] = {"m3g", "info", "f.m3g", "--json"};
-    const CliArgs a = m3gcli::parseCliArgs(4, argv);
-    EXPECT_EQ(a.command, "info");
-    EXPECT_TRUE(a.json);
+TEST(CliArgs, SizeLimits) {
+    EXPECT_FALSE(m3gcli::sizeLimitError("--size", 2048, 2048, 2048, 2048));
+    EXPECT_FALSE(m3gcli::sizeLimitError("--size", 1, 1, 2048, 2048));
+    const auto wide = m3gcli::sizeLimitError("--size", 100000, 100000, 2048, 2048);
+    ASSERT_TRUE(wide);
+    EXPECT_NE(wide->find("--size 100000x100000 exceeds"), std::string::npos) << *wide;
+    EXPECT_NE(wide->find("2048x2048"), std::string::npos) << *wide;
+    EXPECT_TRUE(m3gcli::sizeLimitError("--size", 2049, 10, 2048, 2048));
+    EXPECT_TRUE(m3gcli::sizeLimitError("--size", 10, 4000, 4096, 2048));
+    // parseSizeOption: the library's limits (2048 by default).
+    int w = 1, h = 1;
+    m3gcli::parseSizeOption("--size", "640x480", w, h);
+    EXPECT_EQ(w, 640);
+    EXPECT_EQ(h, 480);
+    EXPECT_THROW(m3gcli::parseSizeOption("--size", "100000x100000", w, h), CliError);
+    EXPECT_THROW(m3gcli::parseSizeOption("--size", "64", w, h), CliError);
+    EXPECT_EQ(w, 640);  // left alone
+}
+
+TEST(CliArgs, IntOptionsAndExtensions) {
+    EXPECT_EQ(m3gcli::parseIntOption("--frames", "12", 1, "a positive integer"), 12);
+    try {
+        m3gcli::parseIntOption("--frames", "0", 1, "a positive integer");
+        FAIL() << "no error";
+    } catch (const CliError& e) {
+        EXPECT_STREQ(e.what(), "--frames takes a positive integer, not '0'");
+    }
+    EXPECT_EQ(m3gcli::lowerExtension("dir.v1/Shot.JPG"), ".jpg");
+    EXPECT_EQ(m3gcli::lowerExtension("out"), "");
 }

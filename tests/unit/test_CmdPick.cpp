@@ -11,15 +11,16 @@
 #include <m3g/m3g.h>
 
 #include "CliArgs.h"
+#include "CliErrors.h"
 #include "cmd_pick.h"
 
 using namespace m3g;
 
 namespace {
 
-m3gcli::CliArgs parse(std::initializer_list<std::string_view> args) {
+m3gcli::PickArgs parse(std::initializer_list<std::string_view> args) {
     const std::vector<std::string_view> v(args);
-    return m3gcli::parseCliArgs(std::span<const std::string_view>(v));
+    return m3gcli::parsePickArgs(std::span<const std::string_view>(v));
 }
 
 /// A World whose active camera (perspective 90, 1, 1, 10, at the origin)
@@ -55,19 +56,26 @@ std::string report(Object3D* root, float x, float y, bool json, int time = 0) {
 }  // namespace
 
 TEST(CmdPick, Arguments) {
-    const m3gcli::CliArgs a = parse({"pick", "w.m3g", "0.25", "0.75", "--time", "40", "--json", "--lenient"});
-    EXPECT_EQ(a.command, "pick");
-    EXPECT_EQ(a.files, (std::vector<std::string>{"w.m3g", "0.25", "0.75"}));
-    EXPECT_EQ(a.time, 40);
+    const m3gcli::PickArgs a = parse({"w.m3g", "0.25", "0.75", "--time", "40", "--json", "--lenient"});
+    EXPECT_EQ(a.file, "w.m3g");
+    EXPECT_EQ(a.x, "0.25");
+    EXPECT_EQ(a.y, "0.75");
+    EXPECT_EQ(a.time, "40");
     EXPECT_TRUE(a.json);
     EXPECT_TRUE(a.lenient);
+    EXPECT_EQ(parse({"w.m3g", "0", "1", "--time=-5"}).time, "-5");
     // Negative coordinates are operands, not options.
-    const m3gcli::CliArgs n = parse({"pick", "w.m3g", "-0.5", "-1e-3"});
-    EXPECT_EQ(n.files, (std::vector<std::string>{"w.m3g", "-0.5", "-1e-3"}));
-    EXPECT_THROW(parse({"pick", "w.m3g", "0.5"}), m3gcli::CliError);
-    EXPECT_THROW(parse({"pick", "w.m3g", "0.5", "0.5", "0.5"}), m3gcli::CliError);
-    EXPECT_THROW(parse({"pick", "w.m3g", "0.5", "0.5", "--compress"}), m3gcli::CliError);
-    EXPECT_THROW(parse({"pick", "w.m3g", "0.5", "0.5", "-x"}), m3gcli::CliError);
+    const m3gcli::PickArgs n = parse({"w.m3g", "-0.5", "-1e-3"});
+    EXPECT_EQ(n.x, "-0.5");
+    EXPECT_EQ(n.y, "-1e-3");
+    EXPECT_THROW(parse({"w.m3g", "0.5"}), m3gcli::CliError);
+    EXPECT_THROW(parse({"w.m3g", "0.5", "0.5", "0.5"}), m3gcli::CliError);
+    EXPECT_THROW(parse({"w.m3g", "0.5", "0.5", "--compress"}), m3gcli::CliError);
+    EXPECT_THROW(parse({"w.m3g", "0.5", "0.5", "-x"}), m3gcli::CliError);
+    // Values are checked when the command runs: X must be a number (usage error).
+    m3gcli::PickArgs bad = n;
+    bad.x = "middle";
+    EXPECT_THROW(m3gcli::runPick(bad), m3gcli::CliError);
     EXPECT_EQ(m3gcli::parseFloat("-0.25"), -0.25f);
     EXPECT_EQ(m3gcli::parseFloat("+2"), 2.0f);
     EXPECT_FALSE(m3gcli::parseFloat("1.5x"));

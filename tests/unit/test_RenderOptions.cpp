@@ -1,4 +1,4 @@
-// `m3g render` options (tools/m3g/RenderOptions): parsing, background colours
+// `m3g render` options (tools/m3g/RenderOptions, on CLI11): parsing, background colours
 // and frame file names.
 #include <gtest/gtest.h>
 
@@ -44,6 +44,15 @@ TEST(RenderOptions, Defaults) {
     EXPECT_DOUBLE_EQ(o.maxShare, 0.01);
 }
 
+TEST(RenderOptions, ValuesAfterEqualsSign) {
+    const RenderOptions o = parse({"a.m3g", "--output=a.jpg", "--size=64x48", "--time=-100", "--frames=3"});
+    EXPECT_EQ(o.output, "a.jpg");
+    EXPECT_EQ(o.width, 64);
+    EXPECT_EQ(o.height, 48);
+    EXPECT_EQ(o.time, -100);
+    EXPECT_EQ(o.frames, 3);
+}
+
 TEST(RenderOptions, AllOptions) {
     const RenderOptions o = parse({"--size", "64x48", "in.m3g", "--frames", "12", "--fps", "24", "--time", "-100",
                                    "--camera-index", "2", "--background", "transparent", "--align", "--lenient",
@@ -69,7 +78,7 @@ TEST(RenderOptions, AllOptions) {
 }
 
 TEST(RenderOptions, Errors) {
-    EXPECT_NE(errorOf({"-o", "x.png"}).find("no input"), std::string::npos);
+    EXPECT_NE(errorOf({"-o", "x.png"}).find("missing FILE|DIR|GAME.jar"), std::string::npos);
     EXPECT_NE(errorOf({"a.m3g", "-o", "x.png", "--frames", "3", "--turntable", "4"}).find("exclude each other"),
               std::string::npos);
     EXPECT_NE(errorOf({"a.m3g", "--frames", "3", "--reference", "r.png"}).find("--reference"), std::string::npos);
@@ -81,9 +90,15 @@ TEST(RenderOptions, Errors) {
     EXPECT_NE(errorOf({"a.m3g", "-o", "x.png", "--reference", "r.png", "--threshold", "256"}).find("[0, 255]"),
               std::string::npos);
     EXPECT_NE(errorOf({"a.m3g", "-o", "-", "--turntable", "3"}).find("stdout"), std::string::npos);
-    EXPECT_NE(errorOf({"a.m3g", "-o", "x.png", "--spin"}).find("unknown option --spin"), std::string::npos);
-    EXPECT_NE(errorOf({"a.m3g", "b.m3g", "-o", "x.png"}).find("unexpected operand b.m3g"), std::string::npos);
-    EXPECT_NE(errorOf({"a.m3g", "--frames"}).find("needs a value"), std::string::npos);
+    EXPECT_EQ(errorOf({"a.m3g", "-o", "x.png", "--spin"}), "unknown option '--spin'");
+    EXPECT_EQ(errorOf({"a.m3g", "-o", "x.png", "--turntabel", "3"}),
+              "unknown option '--turntabel'; did you mean '--turntable'?");
+    EXPECT_EQ(errorOf({"a.m3g", "b.m3g", "-o", "x.png"}), "unexpected argument 'b.m3g'");
+    EXPECT_NE(errorOf({"a.m3g", "--frames"}).find("--frames"), std::string::npos);
+    // --size: WxH within the renderer's limits (2048x2048 by default), never a bad_alloc later.
+    EXPECT_NE(errorOf({"a.m3g", "-o", "x.png", "--size", "100000x100000"}).find("exceeds the renderer's limit"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"a.m3g", "-o", "x.png", "--size", "big"}).find("WxH"), std::string::npos);
 }
 
 TEST(RenderOptions, BackgroundColorIsRRGGBBAA) {

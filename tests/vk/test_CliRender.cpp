@@ -135,10 +135,12 @@ TEST_F(CliRenderTest, ReferenceComparisonIsTheExitStatus) {
     EXPECT_EQ(renderSample("x.png", {"--time", "1000", "--reference", at("ref.png").string()}), 1);
     // ... unless no difference can exceed the threshold.
     EXPECT_EQ(renderSample("y.png", {"--time", "1000", "--reference", at("ref.png").string(), "--threshold", "255"}), 0);
-    // A reference of another size, a missing one: failures (1); bad usage: 2.
+    // A reference of another size is a mismatch (1); a missing one cannot be
+    // read (3) and nothing is written; bad usage: 2.
     ASSERT_EQ(render({sample().string(), "-o", at("big.png").string(), "--size", "80x60"}), 0);
     EXPECT_EQ(renderSample("z.png", {"--reference", at("big.png").string()}), 1);
-    EXPECT_EQ(renderSample("z.png", {"--reference", at("none.png").string()}), 1);
+    EXPECT_EQ(renderSample("none-out.png", {"--reference", at("none.png").string()}), 3);
+    EXPECT_FALSE(fs::exists(at("none-out.png")));
     EXPECT_EQ(renderSample("z.png", {"--reference", at("ref.png").string(), "--frames", "2"}), 2);
 }
 
@@ -149,7 +151,7 @@ TEST_F(CliRenderTest, CameraIndexCountsCamerasInFileOrder) {
     testing::internal::CaptureStderr();
     const int status = renderSample("cam1.png", {"--camera-index", "1"});
     const std::string err = testing::internal::GetCapturedStderr();
-    EXPECT_EQ(status, 1);
+    EXPECT_EQ(status, 2);  // the option does not fit the file: a usage error
     EXPECT_NE(err.find("the file has 1 Camera"), std::string::npos) << err;
     EXPECT_FALSE(fs::exists(at("cam1.png")));
 }
@@ -183,7 +185,7 @@ TEST_F(CliRenderTest, BatchOverAFolderRendersEveryM3gAndReportsFailures) {
     testing::internal::CaptureStdout();
     const int status = render({in.string(), "-o", at("out").string(), "--size", "32x24"});
     const std::string out = testing::internal::GetCapturedStdout();
-    EXPECT_EQ(status, 1);  // one file failed
+    EXPECT_EQ(status, 3);  // one file failed to load
     EXPECT_NE(out.find("4 file(s)"), std::string::npos) << out;
     EXPECT_NE(out.find("3 ok, 1 failed"), std::string::npos) << out;
     EXPECT_NE(out.find("failed: " + (in / "broken.m3g").string() + ": "), std::string::npos) << out;
@@ -215,7 +217,7 @@ TEST_F(CliRenderTest, BatchOverAJarRendersItsM3gEntries) {
     testing::internal::CaptureStdout();
     const int status = render({jar.string(), "-o", at("out").string(), "--size", "32x24"});
     const std::string out = testing::internal::GetCapturedStdout();
-    EXPECT_EQ(status, 1);
+    EXPECT_EQ(status, 3);
     EXPECT_NE(out.find("2 ok, 1 failed"), std::string::npos) << out;
     EXPECT_NE(out.find(jar.string() + "!/res/broken.m3g"), std::string::npos) << out;
     EXPECT_NE(out.find("skipped 2 file(s) that are not M3G data"), std::string::npos) << out;
@@ -228,7 +230,42 @@ TEST_F(CliRenderTest, BatchOverAJarRendersItsM3gEntries) {
                           m3gcli::readPng(at("direct.png").string())));
     // A .jar that is not a zip is rendered as a file (and fails as one).
     std::ofstream(at("fake.jar")) << "plain text";
-    EXPECT_EQ(render({at("fake.jar").string(), "-o", at("fake.png").string()}), 1);
+    EXPECT_EQ(render({at("fake.jar").string(), "-o", at("fake.png").string()}), 3);
+}
+
+TEST_F(CliRenderTest, JpegOutputHasTheRenderedPixels) {
+    // -o x.jpg writes a JPEG (read back by the library's decoder), close to the PNG.
+    ASSERT_EQ(renderSample("plain.png"), 0);
+    ASSERT_EQ(renderSample("plain.jpg"), 0);
+    const std::vector<std::uint8_t> jpeg = bytes(at("plain.jpg"));
+    ASSERT_GE(jpeg.size(), 3u);
+    EXPECT_EQ(jpeg[0], 0xFF);
+    EXPECT_EQ(jpeg[1], 0xD8);  // SOI marker
+    Ref<Image2D> decoded = dynamic_cast<Image2D*>(Loader::load(at("plain.jpg").string()).at(0).get());
+    ASSERT_NE(decoded.get(), nullptr);
+    EXPECT_EQ(decoded->getWidth(), 64);
+    EXPECT_EQ(decoded->getHeight(), 48);
+    RgbaImage fromJpeg;
+    fromJpeg.width = 64;
+    fromJpeg.height = 48;
+    decoded->getPixelsRGBA8(fromJpeg.pixels);
+    const m3gcli::Comparison c = m3gcli::compareImages(fromJpeg, m3gcli::readPng(at("plain.png").string()), 48);
+    EXPECT_LT(c.share, 0.05);
+    // An extension the tool does not write is refused, nothing written.
+    EXPECT_EQ(renderSample("plain.bmp"), 2);
+    EXPECT_FALSE(fs::exists(at("plain.bmp")));
+}
+
+TEST_F(CliRenderTest, UniformImageGetsAHint) {
+    // A PNG file has no nodes: the auto-framed empty World is all background.
+    ASSERT_EQ(renderSample("plain.png"), 0);
+    testing::internal::CaptureStderr();
+    ASSERT_EQ(render({at("plain.png").string(), "-o", at("empty.png").string(), "--size", "32x24"}), 0);
+    const std::string err = testing::internal::GetCapturedStderr();
+    EXPECT_NE(err.find("is uniform"), std::string::npos) << err;
+    testing::internal::CaptureStderr();
+    ASSERT_EQ(renderSample("again.png"), 0);
+    EXPECT_EQ(testing::internal::GetCapturedStderr().find("is uniform"), std::string::npos);
 }
 
 TEST_F(CliRenderTest, CorpusTeapotTurntable) {

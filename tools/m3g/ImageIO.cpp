@@ -1,8 +1,11 @@
 #include "ImageIO.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <stdexcept>
 
@@ -11,6 +14,9 @@
 #include <m3g/Graphics.h>
 #include <m3g/Image2D.h>
 #include <m3g/PngWriter.h>
+
+#include "CliErrors.h"
+#include "JpegWriter.h"
 
 namespace m3gcli {
 
@@ -78,6 +84,33 @@ void writePng(const std::string& path, const RgbaImage& image, bool alpha) {
     if (!ok) throw std::runtime_error("cannot write PNG " + path + ": " + img.message);
 }
 
+ImageFormat imageFormatFor(const std::string& path) {
+    if (path == "-") return ImageFormat::Png;
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext == ".png") return ImageFormat::Png;
+    if (ext == ".jpg" || ext == ".jpeg") return ImageFormat::Jpeg;
+    throw CliError("cannot tell the image format of '" + path + "'" +
+                   (ext.empty() ? std::string(" (no extension)") : " ('" + ext + "' is not one)") +
+                   ": name it .png, .jpg or .jpeg");
+}
+
+void writeImage(const std::string& path, const RgbaImage& image, bool alpha) {
+    const ImageFormat format = imageFormatFor(path);
+    try {
+        if (format == ImageFormat::Png) {
+            writePng(path, image, alpha);
+            return;
+        }
+        const std::vector<std::uint8_t> bytes = encodeJpeg(image);
+        std::ofstream out(path, std::ios::binary | std::ios::trunc);
+        if (out) out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+        if (!out) throw std::runtime_error("cannot write JPEG " + path);
+    } catch (const std::runtime_error& e) {
+        throw OutputError(e.what());
+    }
+}
+
 std::vector<std::uint8_t> encodePng(const RgbaImage& image, bool alpha) {
     // The library's encoder (api/m3g/PngWriter.h), over an Image2D of the pixels.
     std::vector<std::uint8_t> rgb;
@@ -126,6 +159,13 @@ std::string comparisonReport(const Comparison& c, int threshold, double maxShare
                   threshold, c.differing, c.total, 100.0 * c.share, c.psnr, c.maxDifference,
                   withinLimits(c, maxShare, minPsnr) ? "PASS" : "FAIL", 100.0 * maxShare, minPsnr);
     return buf;
+}
+
+bool isUniform(const RgbaImage& image) {
+    const std::size_t n = image.pixels.size();
+    for (std::size_t i = 4; i < n; ++i)
+        if (image.pixels[i] != image.pixels[i % 4]) return false;
+    return true;
 }
 
 RgbaImage diffImage(const RgbaImage& a, const RgbaImage& b, int threshold) {

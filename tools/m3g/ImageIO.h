@@ -1,4 +1,4 @@
-// PNG reading/writing and image comparison for the m3g tool and the image
+// PNG reading, PNG and JPEG writing (by the output's extension) and image comparison for the m3g tool and the image
 // tests (the device tests' measure: count of pixels whose largest channel
 // difference exceeds a threshold, and PSNR). Part of m3g_cli_support.
 #pragma once
@@ -26,6 +26,20 @@ RgbaImage fromGraphics(const m3g::Graphics& graphics);
 RgbaImage readPng(const std::string& path);
 /// Writes RGBA8 (or RGB8 when `alpha` is false) to `path`; "-" is stdout.
 void writePng(const std::string& path, const RgbaImage& image, bool alpha);
+
+/// The image file formats the tool writes.
+enum class ImageFormat { Png, Jpeg };
+
+/// The format an output path asks for by its extension, any case: .png;
+/// .jpg or .jpeg; "-" (stdout) is PNG. Any other extension, or none, throws
+/// CliError naming the path and the extensions written: an image is never
+/// written in a format its name does not say.
+ImageFormat imageFormatFor(const std::string& path);
+
+/// Writes `image` in imageFormatFor(path): PNG as writePng, JPEG without
+/// alpha. Throws CliError for an unknown extension, OutputError (naming the
+/// path) when the file cannot be written.
+void writeImage(const std::string& path, const RgbaImage& image, bool alpha);
 /// The PNG file bytes of `image` (RGBA8, or RGB8 when `alpha` is false).
 /// Throws std::runtime_error when libpng fails.
 std::vector<std::uint8_t> encodePng(const RgbaImage& image, bool alpha);
@@ -46,6 +60,10 @@ bool withinLimits(const Comparison& c, double maxShare, double minPsnr);
 /// The report of `m3g compare` (several lines, ends with a newline):
 /// differing pixels, PSNR, largest difference, then PASS or FAIL with the limits.
 std::string comparisonReport(const Comparison& c, int threshold, double maxShare, double minPsnr);
+
+/// True when every pixel of `image` (RGBA) is the same: a render that shows
+/// nothing but the clear colour.
+bool isUniform(const RgbaImage& image);
 
 /// A diff image: grey copy of `a`, differing pixels in red with brightness
 /// by difference.

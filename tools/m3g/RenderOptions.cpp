@@ -49,92 +49,96 @@ std::string frameFileName(const std::string& pattern, int frame, int count) {
     return out.substr(0, out.size() - ext.size()) + "_" + number + ext;
 }
 
-RenderOptions parseRenderOptions(std::span<const std::string_view> args) {
+void addRenderOptions(CLI::App& app, RenderFlags& f) {
+    app.add_option("input", f.input, "an .m3g (or PNG/JPEG) file; a folder or a J2ME .jar renders every M3G file in it")
+        ->type_name("FILE|DIR|GAME.jar")
+        ->required();
+    app.add_option("-o,--output", f.output,
+                   "the image: .png, or .jpg/.jpeg; - for a PNG on stdout; a sequence's pattern ({frame} is "
+                   "replaced, default out_{frame}.png); the output folder in batch mode")
+        ->type_name("OUT");
+    app.add_option("--size", f.size, "image size in pixels (default 320x240; at most the renderer's maxViewportWidth x "
+                                     "maxViewportHeight)")
+        ->type_name("WxH");
+    app.add_option("--time", f.time, "world time of the (first) frame in ms (default 0)")->type_name("MS");
+    app.add_flag("--align", f.align, "apply the World's node alignment (World.align) before each frame");
+    app.add_flag("--lenient", f.lenient, "accept the exporter faults seen in real files (LoaderOptions.lenient)");
+    app.add_option("--frames", f.frames, "an animation sequence of N frames")->type_name("N");
+    app.add_option("--fps", f.fps, "frames per second of the sequence (default 30): frame k at time + k*1000/F")
+        ->type_name("F");
+    app.add_option("--turntable", f.turntable, "N frames orbiting the camera around the scene's vertical axis")
+        ->type_name("N");
+    app.add_option("--camera-index", f.cameraIndex, "render through the file's I-th Camera (0-based, file order)")
+        ->type_name("I");
+    app.add_option("--background", f.background,
+                   "clear to this colour instead of the World's Background (hex RRGGBBAA, or transparent); writes RGBA")
+        ->type_name("RRGGBBAA|transparent");
+    app.add_option("--reference", f.reference,
+                   "compare the image with REF.png as `m3g compare` does: exit code 0 within the limits, 1 not")
+        ->type_name("REF.png");
+    app.add_option("--threshold", f.threshold, "with --reference: a pixel differs when a channel is off by more "
+                                               "than T (0..255, default 8)")
+        ->type_name("T");
+    app.add_option("--max-share", f.maxShare, "with --reference: largest share of differing pixels (default 0.01)")
+        ->type_name("S");
+    app.add_option("--min-psnr", f.minPsnr, "with --reference: smallest PSNR in dB (default 0)")->type_name("DB");
+}
+
+RenderOptions finishRenderOptions(const RenderFlags& f) {
     RenderOptions r;
-    bool haveThreshold = false, haveShare = false, havePsnr = false;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string_view a = args[i];
-        auto value = [&](const char* name) -> std::string_view {
-            if (i + 1 >= args.size()) throw CliError(std::string("render: ") + name + " needs a value");
-            return args[++i];
-        };
-        auto positiveInt = [&](const char* name) {
-            const std::string_view v = value(name);
-            const auto n = parseInt(v);
-            if (!n || *n <= 0)
-                throw CliError(std::string("render: ") + name + " takes a positive integer, not '" + std::string(v) + "'");
-            return *n;
-        };
-        auto nonNegative = [&](const char* name) {
-            const std::string_view v = value(name);
-            const auto f = parseFloat(v);
-            if (!f || *f < 0)
-                throw CliError(std::string("render: ") + name + " takes a non-negative number, not '" + std::string(v) + "'");
-            return static_cast<double>(*f);
-        };
-        if (a == "-o" || a == "--output") {
-            r.output = value("-o");
-        } else if (a == "--size") {
-            if (!parseSize(value("--size"), r.width, r.height)) throw CliError("render: --size takes WxH, e.g. 320x240");
-        } else if (a == "--time") {
-            auto t = parseInt(value("--time"));
-            if (!t) throw CliError("render: --time takes an integer number of milliseconds");
-            r.time = *t;
-        } else if (a == "--align") {
-            r.align = true;
-        } else if (a == "--lenient") {
-            r.lenient = true;
-        } else if (a == "--frames") {
-            r.frames = positiveInt("--frames");
-        } else if (a == "--fps") {
-            const std::string_view v = value("--fps");
-            const auto f = parseFloat(v);
-            if (!f || *f <= 0) throw CliError("render: --fps takes a positive number, not '" + std::string(v) + "'");
-            r.fps = *f;
-        } else if (a == "--turntable") {
-            r.turntable = positiveInt("--turntable");
-        } else if (a == "--camera-index") {
-            const std::string_view v = value("--camera-index");
-            const auto n = parseInt(v);
-            if (!n || *n < 0)
-                throw CliError("render: --camera-index takes a Camera's index (0, 1, ...), not '" + std::string(v) + "'");
-            r.cameraIndex = *n;
-        } else if (a == "--background") {
-            const std::string_view v = value("--background");
-            r.background = parseBackgroundColor(v);
-            if (!r.background)
-                throw CliError("render: --background takes RRGGBBAA (hex) or 'transparent', not '" + std::string(v) + "'");
-        } else if (a == "--reference") {
-            r.reference = value("--reference");
-        } else if (a == "--threshold") {
-            const std::string_view v = value("--threshold");
-            const auto t = parseInt(v);
-            if (!t || *t < 0 || *t > 255)
-                throw CliError("render: --threshold takes an integer in [0, 255], not '" + std::string(v) + "'");
-            r.threshold = *t;
-            haveThreshold = true;
-        } else if (a == "--max-share") {
-            r.maxShare = nonNegative("--max-share");
-            haveShare = true;
-        } else if (a == "--min-psnr") {
-            r.minPsnr = nonNegative("--min-psnr");
-            havePsnr = true;
-        } else if (!a.empty() && a[0] == '-' && a != "-") {
-            throw CliError("render: unknown option " + std::string(a));
-        } else if (r.input.empty()) {
-            r.input = a;
-        } else {
-            throw CliError("render: unexpected operand " + std::string(a));
-        }
+    r.input = f.input;
+    r.output = f.output;
+    auto nonNegative = [](const char* name, const std::string& v) {
+        const auto x = parseFloat(v);
+        if (!x || *x < 0) throw CliError(std::string(name) + " takes a non-negative number, not '" + v + "'");
+        return static_cast<double>(*x);
+    };
+    if (!f.size.empty()) parseSizeOption("--size", f.size, r.width, r.height);
+    if (!f.time.empty()) {
+        const auto t = parseInt(f.time);
+        if (!t) throw CliError("--time takes an integer number of milliseconds, not '" + f.time + "'");
+        r.time = *t;
     }
-    if (r.input.empty()) throw CliError("render: no input file");
-    if (r.frames > 0 && r.turntable > 0) throw CliError("render: --frames and --turntable exclude each other");
+    r.align = f.align;
+    r.lenient = f.lenient;
+    if (!f.frames.empty()) r.frames = parseIntOption("--frames", f.frames, 1, "a positive integer");
+    if (!f.fps.empty()) {
+        const auto x = parseFloat(f.fps);
+        if (!x || *x <= 0) throw CliError("--fps takes a positive number, not '" + f.fps + "'");
+        r.fps = *x;
+    }
+    if (!f.turntable.empty()) r.turntable = parseIntOption("--turntable", f.turntable, 1, "a positive integer");
+    if (!f.cameraIndex.empty())
+        r.cameraIndex = parseIntOption("--camera-index", f.cameraIndex, 0, "a Camera's index (0, 1, ...)");
+    if (!f.background.empty()) {
+        r.background = parseBackgroundColor(f.background);
+        if (!r.background)
+            throw CliError("--background takes RRGGBBAA (hex) or 'transparent', not '" + f.background + "'");
+    }
+    r.reference = f.reference;
+    if (!f.threshold.empty()) {
+        const auto t = parseInt(f.threshold);
+        if (!t || *t < 0 || *t > 255)
+            throw CliError("--threshold takes an integer in [0, 255], not '" + f.threshold + "'");
+        r.threshold = *t;
+    }
+    if (!f.maxShare.empty()) r.maxShare = nonNegative("--max-share", f.maxShare);
+    if (!f.minPsnr.empty()) r.minPsnr = nonNegative("--min-psnr", f.minPsnr);
+    if (r.frames > 0 && r.turntable > 0) throw CliError("--frames and --turntable exclude each other");
     if (!r.reference.empty() && r.sequence())
-        throw CliError("render: --reference compares one image; it does not combine with --frames or --turntable");
-    if (r.reference.empty() && (haveThreshold || haveShare || havePsnr))
-        throw CliError("render: --threshold, --max-share and --min-psnr need --reference REF.png");
-    if (r.output == "-" && r.sequence()) throw CliError("render: a sequence cannot be written to stdout (-o -)");
+        throw CliError("--reference compares one image; it does not combine with --frames or --turntable");
+    if (r.reference.empty() && (!f.threshold.empty() || !f.maxShare.empty() || !f.minPsnr.empty()))
+        throw CliError("--threshold, --max-share and --min-psnr need --reference REF.png");
+    if (r.output == "-" && r.sequence()) throw CliError("a sequence cannot be written to stdout (-o -)");
     return r;
+}
+
+RenderOptions parseRenderOptions(std::span<const std::string_view> args) {
+    CLI::App app("", "render");
+    RenderFlags flags;
+    addRenderOptions(app, flags);
+    parseArgs(app, std::vector<std::string>(args.begin(), args.end()));
+    return finishRenderOptions(flags);
 }
 
 }  // namespace m3gcli

@@ -9,6 +9,8 @@
 #include <string>
 #include <string_view>
 
+#include "CliApp.h"
+
 namespace m3gcli {
 
 struct RenderOptions {
@@ -32,11 +34,26 @@ struct RenderOptions {
     bool sequence() const { return frames > 0 || turntable > 0; }
 };
 
-/// Parses the arguments after "render". Throws CliError (message starts with
-/// "render: ") for an unknown option, a missing or malformed value, no input,
+/// The command line of `m3g render` as given: CLI11 fills it,
+/// finishRenderOptions says what it means. An empty value: not given.
+struct RenderFlags {
+    std::string input, output, size, time, frames, fps, turntable, cameraIndex, background, reference, threshold,
+        maxShare, minPsnr;
+    bool align = false, lenient = false;
+};
+
+/// Adds INPUT and every option of `m3g render`, described, to `app`.
+void addRenderOptions(CLI::App& app, RenderFlags& flags);
+
+/// The options `flags` stand for. Throws CliError for a malformed value, a
+/// --size beyond the renderer's limits (CliArgs.h, parseSizeOption),
 /// --frames together with --turntable, --reference with a sequence, or a
 /// sequence to stdout. `output` stays empty without -o (cmdRender decides:
 /// batch and single images need it, a sequence writes "out_{frame}.png").
+RenderOptions finishRenderOptions(const RenderFlags& flags);
+
+/// Parses the arguments after "render" (addRenderOptions, parseArgs,
+/// finishRenderOptions); throws CliError for an unknown option too.
 RenderOptions parseRenderOptions(std::span<const std::string_view> args);
 
 /// "RRGGBBAA" (hex, any case) or "transparent" as 0xAARRGGBB; nullopt otherwise.

@@ -13,7 +13,7 @@
 // mesh the O(V^2) baseline runs on, default 100000), --run L (vertices per
 // addTransform record, default 16), --time S (seconds per measurement,
 // default 0.3), --no-compute (CPU paths only).
-#include "cmd_bench.h"
+#include "Commands.h"
 
 #include <algorithm>
 #include <chrono>
@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -327,53 +328,56 @@ int benchMorph(const BenchOptions& o) {
     return 0;
 }
 
-const char* const kUsage =
-    "usage: m3g bench skin|morph [--quick] [--baseline-max N] [--run L] [--time SECONDS] [--no-compute]\n";
+/// The options of `bench skin` and `bench morph`, as given.
+struct BenchFlags {
+    bool quick = false, noCompute = false;
+    std::string baselineMax, runLength, seconds;
+};
+
+/// A positive number option, or `fallback` when not given.
+double positive(const char* name, const std::string& v, double fallback) {
+    if (v.empty()) return fallback;
+    char* end = nullptr;
+    const double x = std::strtod(v.c_str(), &end);
+    if (*end != '\0' || !(x > 0)) throw CliError(std::string(name) + " takes a positive number, not '" + v + "'");
+    return x;
+}
+
+BenchOptions finish(const BenchFlags& f) {
+    BenchOptions o;
+    o.quick = f.quick;
+    if (f.quick) o.seconds = 0.1;
+    o.compute = !f.noCompute;
+    o.baselineMax = static_cast<std::size_t>(positive("--baseline-max", f.baselineMax, double(o.baselineMax)));
+    o.runLength = std::max(1, static_cast<int>(positive("--run", f.runLength, o.runLength)));
+    o.seconds = positive("--time", f.seconds, o.seconds);
+    return o;
+}
+
+void addKernelBench(CLI::App& bench, CommandTable& table, const char* name, const char* description,
+                    int (*run)(const BenchOptions&)) {
+    CLI::App* app = addCommandApp(bench, name, description);
+    auto f = std::make_shared<BenchFlags>();
+    app->add_flag("--quick", f->quick, "fewer sizes and shorter runs (0.1 s per measurement)");
+    app->add_option("--baseline-max", f->baselineMax, "largest mesh the O(V^2) baseline runs on (default 100000)")
+        ->type_name("N");
+    app->add_option("--run", f->runLength, "vertices per addTransform record (default 16)")->type_name("L");
+    app->add_option("--time", f->seconds, "seconds per measurement (default 0.3)")->type_name("SECONDS");
+    app->add_flag("--no-compute", f->noCompute, "CPU paths only (no compute-shader column)");
+    table[app] = [f, run] { return run(finish(*f)); };
+}
 
 }  // namespace
 
-int benchCommand(int argc, const char* const* argv) {
-    if (argc < 1) {
-        std::fprintf(stderr, "m3g: bench needs what to measure\n%s", kUsage);
-        return 2;
-    }
-    const std::string_view what = argv[0];
-    BenchOptions o;
-    for (int i = 1; i < argc; ++i) {
-        const std::string_view a = argv[i];
-        auto value = [&](const char* name) -> const char* {
-            if (i + 1 >= argc) {
-                std::fprintf(stderr, "m3g: %s needs a value\n%s", name, kUsage);
-                return nullptr;
-            }
-            return argv[++i];
-        };
-        if (a == "--quick") {
-            o.quick = true;
-            o.seconds = 0.1;
-        } else if (a == "--no-compute") {
-            o.compute = false;
-        } else if (a == "--baseline-max" || a == "--run" || a == "--time") {
-            const char* v = value(std::string(a).c_str());
-            if (!v) return 2;
-            char* end = nullptr;
-            const double x = std::strtod(v, &end);
-            if (*end != '\0' || !(x > 0)) {
-                std::fprintf(stderr, "m3g: %s: '%s' is not a positive number\n%s", std::string(a).c_str(), v, kUsage);
-                return 2;
-            }
-            if (a == "--baseline-max") o.baselineMax = static_cast<std::size_t>(x);
-            else if (a == "--run") o.runLength = std::max(1, static_cast<int>(x));
-            else o.seconds = x;
-        } else {
-            std::fprintf(stderr, "m3g: unknown bench option '%s'\n%s", argv[i], kUsage);
-            return 2;
-        }
-    }
-    if (what == "skin") return benchSkin(o);
-    if (what == "morph") return benchMorph(o);
-    std::fprintf(stderr, "m3g: unknown benchmark '%s'\n%s", argv[0], kUsage);
-    return 2;
+void addBenchCommand(CLI::App& parent, CommandTable& table) {
+    CLI::App* bench = addCommandApp(parent, "bench", "benchmarks: render, soak, skin, morph (m3g bench WHAT --help)");
+    addBenchRenderCommand(*bench, table);
+    addBenchSoakCommand(*bench, table);
+    addKernelBench(*bench, table, "skin",
+                   "skinning kernels against the founding paper's baseline (docs/skinning.md)",
+                   benchSkin);
+    addKernelBench(*bench, table, "morph", "the morph kernel against the plain per-target loop",
+                   benchMorph);
 }
 
 }  // namespace m3gcli

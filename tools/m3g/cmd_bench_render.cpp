@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <ctime>
 #include <string>
+#include <memory>
 #include <vector>
 
 #include <m3g/m3g.h>
@@ -22,6 +23,7 @@
 
 #include "CliArgs.h"
 #include "Commands.h"
+#include "InputFile.h"
 #include "SceneSetup.h"
 
 namespace m3gcli {
@@ -42,41 +44,26 @@ double wallSeconds() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-}  // namespace
-
-int cmdBenchRender(std::span<const std::string_view> args) {
+struct BenchRenderArgs {
     std::vector<std::string> files;
+    std::string size, frames;
+};
+
+int benchRender(const BenchRenderArgs& args) {
     int width = 320, height = 240, frames = 100;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        if (args[i] == "--size" && i + 1 < args.size()) {
-            if (!parseSize(args[++i], width, height)) {
-                std::fprintf(stderr, "m3g: bench render: --size takes WxH\n");
-                return 2;
-            }
-        } else if (args[i] == "--frames" && i + 1 < args.size()) {
-            auto n = parseInt(args[++i]);
-            if (!n || *n <= 0) {
-                std::fprintf(stderr, "m3g: bench render: --frames takes a positive integer\n");
-                return 2;
-            }
-            frames = *n;
-        } else if (!args[i].empty() && args[i][0] == '-') {
-            std::fprintf(stderr, "m3g: bench render: unknown option %s\n", std::string(args[i]).c_str());
-            return 2;
-        } else {
-            files.emplace_back(args[i]);
-        }
-    }
-    if (files.empty()) {
-        std::fprintf(stderr, "m3g: usage: m3g bench render FILE... [--size WxH] [--frames N]\n");
-        return 2;
-    }
+    if (!args.size.empty()) parseSizeOption("--size", args.size, width, height);
+    if (!args.frames.empty()) frames = parseIntOption("--frames", args.frames, 1, "a positive integer");
+    const std::vector<std::string>& files = args.files;
+    // Every file is checked before the first is measured: a typo should not
+    // cost a benchmark run.
+    for (const std::string& file : files) requireInputFile(file);
+    int failed = 0;
     m3g::Graphics3D* g = m3g::Graphics3D::getInstance();
     std::printf("%dx%d, %d frames per file\n", width, height, frames);
     std::printf("%-40s %7s %9s %9s %9s %8s %9s %6s\n", "file", "draws", "first ms", "ms/frame", "fps", "cpu ms", "us/draw", "pipes");
     for (const std::string& file : files) {
         try {
-            m3g::LoadResult loaded = m3g::Loader::loadDetailed(file);
+            m3g::LoadResult loaded = loadInput(file, false);
             PreparedScene scene = prepareScene(loaded, width, height);
             scene.world->animate(0);
             m3g::Ref<m3g::Graphics> target(new m3g::Graphics(width, height));
@@ -104,18 +91,32 @@ int cmdBenchRender(std::span<const std::string_view> args) {
                         1.0 / wall, cpu * 1e3, draws > 0 ? renderCpu / frames / draws * 1e6 : 0.0,
                         static_cast<unsigned long long>(after.pipelinesCreated - before.pipelinesCreated));
             std::fflush(stdout);  // a run stopped by a time limit keeps the files measured
+        } catch (const m3g::vk::VulkanError&) {
+            throw;  // no device: every file would fail the same way
+        } catch (const InputError& e) {
+            // The file is the row's first column: its name is not said again.
+            std::printf("%-40s error: %s\n", file.c_str(), withPath(file, e.what()).substr(file.size() + 2).c_str());
+            failed = failed ? failed : int(kExitInput);
         } catch (const std::exception& e) {
             std::printf("%-40s error: %s\n", file.c_str(), e.what());
+            failed = failed ? failed : int(kExitRender);
         }
     }
-    try {
-        const auto info = m3g::vk::currentDevice();
-        std::printf("device: %s (%s)\n", info.name.c_str(), info.type.c_str());
-    } catch (const m3g::vk::VulkanError& e) {
-        std::fprintf(stderr, "m3g: %s\n", e.what());
-        return 1;
-    }
-    return 0;
+    const auto info = m3g::vk::currentDevice();
+    std::printf("device: %s (%s)\n", info.name.c_str(), info.type.c_str());
+    return failed;  // 0, or the first failure's code (3 load, 5 render)
+}
+
+}  // namespace
+
+void addBenchRenderCommand(CLI::App& bench, CommandTable& table) {
+    CLI::App* app = addCommandApp(bench, "render",
+                                  "rendering speed per file: first frame, ms per frame, fps, CPU per draw");
+    auto args = std::make_shared<BenchRenderArgs>();
+    app->add_option("files", args->files, "the .m3g files to measure")->type_name("FILE")->required();
+    app->add_option("--size", args->size, "target size in pixels (default 320x240)")->type_name("WxH");
+    app->add_option("--frames", args->frames, "frames measured per file (default 100)")->type_name("N");
+    table[app] = [args] { return benchRender(*args); };
 }
 
 }  // namespace m3gcli

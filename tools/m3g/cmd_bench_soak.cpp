@@ -6,6 +6,7 @@
 //
 //   m3g bench soak FILE [--frames N] [--reload K] [--size WxH] [--report R] [--warmup C]
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -14,51 +15,28 @@
 
 #include "CliArgs.h"
 #include "Commands.h"
+#include "InputFile.h"
 #include "Soak.h"
 
 namespace m3gcli {
 
 namespace {
 
-constexpr const char* kUsage =
-    "usage: m3g bench soak FILE [--frames N] [--reload K] [--size WxH] [--report R] [--warmup C]\n"
-    "  load, animate and render FILE for N frames (default 3000), dropping and loading it again\n"
-    "  every K frames (default 300), with immediate-mode draws; prints memory every R frames\n"
-    "  (default: at every reload) and a verdict over the cycles after the first C (default 2)\n";
-
 double mib(std::uint64_t bytes) { return static_cast<double>(bytes) / 1048576.0; }
 
-}  // namespace
+struct SoakFlags {
+    std::string file, frames, reload, size, report, warmup;
+};
 
-int cmdBenchSoak(std::span<const std::string_view> args) {
+int benchSoak(const SoakFlags& f) {
     SoakOptions o;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string_view a = args[i];
-        auto number = [&](int& out) {
-            std::optional<int> n = i + 1 < args.size() ? parseInt(args[++i]) : std::nullopt;
-            if (!n || *n < 0) return false;
-            out = *n;
-            return true;
-        };
-        bool ok = true;
-        if (a == "--frames") ok = number(o.frames) && o.frames > 0;
-        else if (a == "--reload") ok = number(o.reload) && o.reload > 0;
-        else if (a == "--report") ok = number(o.reportEvery);
-        else if (a == "--warmup") ok = number(o.warmupCycles);
-        else if (a == "--size") {
-            ok = i + 1 < args.size() && parseSize(args[++i], o.width, o.height);
-        } else if (!a.empty() && a[0] == '-') ok = false;
-        else if (o.file.empty()) o.file = a;
-        else ok = false;
-        if (!ok) {
-            std::fprintf(stderr, "m3g: bench soak: bad argument %s\n%s", std::string(a).c_str(), kUsage);
-            return 2;
-        }
-    }
-    if (o.file.empty()) {
-        std::fprintf(stderr, "m3g: bench soak: no input file\n%s", kUsage);
-        return 2;
-    }
+    o.file = f.file;
+    if (!f.frames.empty()) o.frames = parseIntOption("--frames", f.frames, 1, "a positive integer");
+    if (!f.reload.empty()) o.reload = parseIntOption("--reload", f.reload, 1, "a positive integer");
+    if (!f.report.empty()) o.reportEvery = parseIntOption("--report", f.report, 0, "a non-negative integer");
+    if (!f.warmup.empty()) o.warmupCycles = parseIntOption("--warmup", f.warmup, 0, "a non-negative integer");
+    if (!f.size.empty()) parseSizeOption("--size", f.size, o.width, o.height);
+    requireInputFile(o.file);
     try {
         std::printf("soak %s: %d frames at %dx%d, reload every %d frames, immediate draws every frame\n",
                     o.file.c_str(), o.frames, o.width, o.height, o.reload);
@@ -73,15 +51,29 @@ int cmdBenchSoak(std::span<const std::string_view> args) {
                     static_cast<unsigned long long>(r.draws), m3g::vk::validationEnabled() ? "on" : "off",
                     static_cast<unsigned long long>(r.validationMessages));
         std::printf("verdict: %s\n", r.verdict.c_str());
-        if (r.judgedCycles == 0) return 1;
-        return r.gpuFlat && r.residentFlat && r.validationMessages == 0 ? 0 : 1;
-    } catch (const m3g::vk::VulkanError& e) {
-        std::fprintf(stderr, "m3g: %s\n", e.what());
-        return 1;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "m3g: bench soak: %s: %s\n", o.file.c_str(), e.what());
-        return 1;
+        if (r.judgedCycles == 0) return kExitMismatch;
+        return r.gpuFlat && r.residentFlat && r.validationMessages == 0 ? kExitOk : kExitMismatch;
+    } catch (const m3g::vk::VulkanError&) {
+        throw;
+    } catch (const m3g::Exception& e) {
+        // The Loader's (the file is loaded again and again) or Graphics3D's.
+        throw InputError(withPath(o.file, e.what()));
     }
+}
+
+}  // namespace
+
+void addBenchSoakCommand(CLI::App& bench, CommandTable& table) {
+    CLI::App* app = addCommandApp(bench, "soak",
+                                  "memory over a long run with reloads; exit code 1 unless flat after the warm-up");
+    auto f = std::make_shared<SoakFlags>();
+    app->add_option("file", f->file, "the .m3g file")->type_name("FILE")->required();
+    app->add_option("--frames", f->frames, "frames in all (default 3000)")->type_name("N");
+    app->add_option("--reload", f->reload, "drop and load the file again every K frames (default 300)")->type_name("K");
+    app->add_option("--size", f->size, "target size in pixels (default 160x120)")->type_name("WxH");
+    app->add_option("--report", f->report, "print memory every R frames (default 0: at every reload)")->type_name("R");
+    app->add_option("--warmup", f->warmup, "cycles left out of the verdict (default 2)")->type_name("C");
+    table[app] = [f] { return benchSoak(*f); };
 }
 
 }  // namespace m3gcli

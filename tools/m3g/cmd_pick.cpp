@@ -1,7 +1,9 @@
 #include "cmd_pick.h"
 
 #include <algorithm>
+#include <climits>
 #include <cstdio>
+#include <memory>
 #include <sstream>
 #include <vector>
 
@@ -9,6 +11,9 @@
 
 #include <m3g/m3g.h>
 
+#include "CliArgs.h"
+#include "Commands.h"
+#include "InputFile.h"
 #include "ObjectDump.h"
 
 namespace m3gcli {
@@ -103,28 +108,48 @@ std::string pickReport(std::span<m3g::Object3D* const> roots, int time, float x,
     return os.str();
 }
 
-int runPick(const CliArgs& args) {
-    const auto x = parseFloat(args.files[1]);
-    const auto y = parseFloat(args.files[2]);
-    if (!x || !y) {
-        std::fprintf(stderr, "m3g: pick: X and Y must be numbers (normalised viewport coordinates), got '%s' '%s'\n",
-                     args.files[1].c_str(), args.files[2].c_str());
-        return 2;
-    }
+void addPickOptions(CLI::App& app, PickArgs& args) {
+    app.add_option("file", args.file, "an .m3g file with a World and an active camera")->type_name("FILE")->required();
+    app.add_option("x", args.x, "viewport X: 0 left, 1 right (numbers outside pick outside)")->type_name("X")->required();
+    app.add_option("y", args.y, "viewport Y: 0 top, 1 bottom")->type_name("Y")->required();
+    app.add_option("--time", args.time, "animate the World to world time T (ms) first (default 0)")->type_name("T");
+    app.add_flag("--json", args.json, "print the RayIntersection as JSON");
+    app.add_flag("--lenient", args.lenient, "accept the exporter faults seen in real files (LoaderOptions.lenient)");
+}
+
+PickArgs parsePickArgs(std::span<const std::string_view> args) {
+    CLI::App app("", "pick");
+    PickArgs out;
+    addPickOptions(app, out);
+    parseArgs(app, std::vector<std::string>(args.begin(), args.end()));
+    return out;
+}
+
+void addPickCommand(CLI::App& parent, CommandTable& table) {
+    CLI::App* app = addCommandApp(parent, "pick",
+                                  "pick through the World's active camera at viewport point (X, Y)");
+    auto args = std::make_shared<PickArgs>();
+    addPickOptions(*app, *args);
+    table[app] = [args] { return runPick(*args); };
+}
+
+int runPick(const PickArgs& args) {
+    const auto x = parseFloat(args.x);
+    const auto y = parseFloat(args.y);
+    if (!x || !y)
+        throw CliError("X and Y must be numbers (normalised viewport coordinates), got '" + args.x + "' '" + args.y + "'");
+    const int time = args.time.empty() ? 0 : parseIntOption("--time", args.time, INT_MIN, "an integer (world time in ms)");
+    const m3g::LoadResult result = loadInput(args.file, args.lenient);
+    std::vector<m3g::Object3D*> roots;
+    for (const auto& r : result.roots) roots.push_back(r.get());
     try {
-        m3g::LoaderOptions options;
-        options.lenient = args.lenient;
-        const m3g::LoadResult result = m3g::Loader::loadDetailed(args.files[0], options);
-        std::vector<m3g::Object3D*> roots;
-        for (const auto& r : result.roots) roots.push_back(r.get());
-        std::printf("%s", pickReport(roots, args.time.value_or(0), *x, *y, args.json).c_str());
-        return 0;
+        std::printf("%s", pickReport(roots, time, *x, *y, args.json).c_str());
     } catch (const PickError& e) {
-        std::fprintf(stderr, "m3g: pick: %s: %s\n", args.files[0].c_str(), e.what());
+        throw InputError(withPath(args.file, e.what()));
     } catch (const m3g::Exception& e) {
-        std::fprintf(stderr, "m3g: %s\n", e.what());
+        throw InputError(withPath(args.file, e.what()));
     }
-    return 1;
+    return kExitOk;
 }
 
 }  // namespace m3gcli

@@ -8,10 +8,11 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include <m3g/Object3D.h>
 
-#include "CliArgs.h"
+#include "CliApp.h"
 
 namespace m3gcli {
 
@@ -36,9 +37,22 @@ public:
 /// exceptions from animate() or pick() pass through.
 std::string pickReport(std::span<m3g::Object3D* const> roots, int time, float x, float y, bool json);
 
-/// The whole command for parsed arguments (command "pick", files FILE X Y):
-/// loads, reports on stdout; 0 on success (hit or not), 1 on a load, pick or
-/// PickError failure (message on stderr), 2 if X or Y is not a number.
-int runPick(const CliArgs& args);
+/// The command line of `m3g pick`, as given (values checked by runPick).
+struct PickArgs {
+    std::string file, x, y;
+    std::string time;  ///< --time T, empty: 0
+    bool json = false, lenient = false;
+};
+
+/// Adds FILE X Y and the options of `m3g pick` to `app`, bound to `args`.
+void addPickOptions(CLI::App& app, PickArgs& args);
+
+/// Parses the arguments after "pick" (throws CliError as parseArgs does).
+PickArgs parsePickArgs(std::span<const std::string_view> args);
+
+/// The whole command: loads, reports on stdout; 0 on success (hit or not).
+/// Throws CliError when X, Y or --time is not a number, InputError when the
+/// file cannot be loaded or has nothing to pick in (PickError).
+int runPick(const PickArgs& args);
 
 }  // namespace m3gcli

@@ -16,7 +16,9 @@
 #include <m3g/m3g.h>
 #include <m3g/vk/Vulkan.h>
 
+#include "CliErrors.h"
 #include "FormatSniffer.h"
+#include "InputFile.h"
 #include "JarArchive.h"
 #include "RenderRun.h"
 
@@ -131,18 +133,16 @@ int renderBatch(const RenderOptions& o) {
             items = jarItems(jar, skipped);
         }
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "m3g: render: %s\n", e.what());
-        return 1;
+        throw InputError(withPath(o.input, e.what()));
     }
-    if (items.empty()) {
-        std::fprintf(stderr, "m3g: render: no M3G data in %s (%zu file(s), none beginning with the JSR-184 identifier)\n",
-                     o.input.c_str(), skipped.size());
-        return 1;
-    }
+    if (items.empty())
+        throw InputError("no M3G data in " + o.input + " (" + std::to_string(skipped.size()) +
+                         " file(s), none beginning with the JSR-184 identifier)");
     m3g::LoaderOptions options;
     options.lenient = o.lenient;
     struct Failure {
         std::string label, reason;
+        int code;  ///< the exit code this failure alone would give
     };
     std::vector<Failure> failures;
     int warned = 0;
@@ -159,13 +159,15 @@ int renderBatch(const RenderOptions& o) {
         } catch (const m3g::vk::VulkanError& e) {
             bar.finish();
             // No device: every further file would fail the same way.
-            std::fprintf(stderr, "m3g: render: %s (batch stopped at %s)\n", e.what(), item.label.c_str());
-            return 1;
+            throw RenderError(std::string(e.what()) + " (batch stopped at " + item.label + ")");
         } catch (const std::exception& e) {
-            // Loader messages already start with the file's name.
-            std::string reason = e.what();
-            if (reason.rfind(item.label + ": ", 0) == 0) reason.erase(0, item.label.size() + 2);
-            failures.push_back({item.label, reason});
+            // Loader messages start with the file's name, once or twice.
+            std::string reason = withPath(item.label, e.what()).substr(item.label.size() + 2);
+            const int code = dynamic_cast<const CliError*>(&e)      ? kExitUsage
+                             : dynamic_cast<const OutputError*>(&e) ? kExitOutput
+                             : dynamic_cast<const RenderError*>(&e) ? kExitRender
+                                                                    : kExitInput;
+            failures.push_back({item.label, reason, code});
         }
     }
     bar.show(static_cast<int>(items.size()), "");
@@ -185,7 +187,8 @@ int renderBatch(const RenderOptions& o) {
         if (skipped.size() > kListed) std::printf(", and %zu more", skipped.size() - kListed);
         std::printf("\n");
     }
-    return failures.empty() ? 0 : 1;
+    // The first failure's code: the one a user fixes first.
+    return failures.empty() ? int(kExitOk) : failures.front().code;
 }
 
 }  // namespace m3gcli

@@ -5,6 +5,9 @@
 #include <GLFW/glfw3.h>
 
 #include <chrono>
+#include <climits>
+#include <exception>
+#include <memory>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -24,6 +27,7 @@
 #include "CliArgs.h"
 #include "Commands.h"
 #include "ImageIO.h"
+#include "InputFile.h"
 #include "ViewerInput.h"
 #include "ViewerScript.h"
 #include "ViewerSettings.h"
@@ -47,36 +51,30 @@ struct ViewArgs {
     bool noUi = false, lenient = false, vsync = true, headlight = true;
 };
 
-ViewArgs parse(std::span<const std::string_view> args) {
+/// The options as given; finish() checks them.
+struct ViewFlags {
+    std::string file, size, time, frames, camera, screenshot, script;
+    bool noUi = false, lenient = false, noVsync = false, noHeadlight = false;
+};
+
+ViewArgs finish(const ViewFlags& f) {
     ViewArgs r;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string_view a = args[i];
-        auto value = [&](const char* name) -> std::string_view {
-            if (i + 1 >= args.size()) throw CliError(std::string("view: ") + name + " needs a value");
-            return args[++i];
-        };
-        auto integer = [&](const char* name) {
-            auto v = parseInt(value(name));
-            if (!v) throw CliError(std::string("view: ") + name + " takes an integer");
-            return *v;
-        };
-        if (a == "--size") {
-            if (!parseSize(value("--size"), r.width, r.height)) throw CliError("view: --size takes WxH, e.g. 1024x768");
-        } else if (a == "--time") r.time = integer("--time");
-        else if (a == "--frames") {
-            r.frames = integer("--frames");
-            if (r.frames < 1) throw CliError("view: --frames must be at least 1");
-        } else if (a == "--camera-index") r.camera = integer("--camera-index");
-        else if (a == "--screenshot") r.screenshot = value("--screenshot");
-        else if (a == "--script") r.script = value("--script");
-        else if (a == "--no-ui") r.noUi = true;
-        else if (a == "--lenient") r.lenient = true;
-        else if (a == "--no-vsync") r.vsync = false;
-        else if (a == "--no-headlight") r.headlight = false;
-        else if (!a.empty() && a[0] == '-') throw CliError("view: unknown option " + std::string(a));
-        else if (r.file.empty()) r.file = a;
-        else throw CliError("view: unexpected operand " + std::string(a));
-    }
+    r.file = f.file;
+    if (!f.size.empty()) parseSizeOption("--size", f.size, r.width, r.height);
+    if (!f.time.empty()) r.time = parseIntOption("--time", f.time, INT_MIN, "an integer (ms)");
+    if (!f.frames.empty()) r.frames = parseIntOption("--frames", f.frames, 1, "a positive integer");
+    if (!f.camera.empty()) r.camera = parseIntOption("--camera-index", f.camera, -1, "a Camera's index (0, 1, ...; -1: the viewer's own)");
+    r.screenshot = f.screenshot;
+    r.script = f.script;
+    r.noUi = f.noUi;
+    r.lenient = f.lenient;
+    r.vsync = !f.noVsync;
+    r.headlight = !f.noHeadlight;
+    if (!r.screenshot.empty()) imageFormatFor(r.screenshot);  // refused before the window opens
+    if (!r.script.empty()) requireInputFile(r.script);
+    // Before a window opens: a missing file or a folder is exit code 3 with
+    // its reason, not an error panel (files dropped later still get one).
+    if (!r.file.empty()) requireInputFile(r.file);
     if (!r.screenshot.empty() && r.frames < 0 && r.script.empty()) r.frames = 1;
     return r;
 }
@@ -131,7 +129,7 @@ void ViewerApp::saveScreenshot(const std::string& path, bool withUi) {
     target_->requestReadback(withUi);
     frame();
     if (!target_->readbackReady()) throw std::runtime_error("view: the screenshot frame was not rendered");
-    writePng(path, fromGraphics(*target_), false);
+    writeImage(path, fromGraphics(*target_), false);
     std::fprintf(stderr, "m3g: wrote %s (%dx%d)\n", path.c_str(), target_->getWidth(), target_->getHeight());
 }
 
@@ -185,14 +183,10 @@ void ViewerApp::frame() {
 
 int ViewerApp::run() {
     glfwSetErrorCallback([](int code, const char* text) { std::fprintf(stderr, "m3g: GLFW error %d: %s\n", code, text); });
-    if (!glfwInit()) {
-        std::fprintf(stderr, "m3g: view: cannot open a window (no display? set DISPLAY, or run under xvfb-run)\n");
-        return 1;
-    }
+    if (!glfwInit()) throw RenderError("cannot open a window (no display? set DISPLAY, or run under xvfb-run)");
     if (!glfwVulkanSupported()) {
-        std::fprintf(stderr, "m3g: view: GLFW finds no Vulkan loader (Debian: libvulkan1 mesa-vulkan-drivers)\n");
         glfwTerminate();
-        return 1;
+        throw RenderError("GLFW finds no Vulkan loader (Debian: libvulkan1 mesa-vulkan-drivers)");
     }
     std::uint32_t count = 0;
     const char** names = glfwGetRequiredInstanceExtensions(&count);
@@ -208,8 +202,7 @@ int ViewerApp::run() {
     window_ = glfwCreateWindow(width, height, "m3g view", nullptr, nullptr);
     if (!window_) {
         glfwTerminate();
-        std::fprintf(stderr, "m3g: view: glfwCreateWindow failed\n");
-        return 1;
+        throw RenderError("glfwCreateWindow failed");
     }
     glfwGetFramebufferSize(window_, &fbWidth_, &fbHeight_);
     GLFWwindow* window = window_;
@@ -234,7 +227,8 @@ int ViewerApp::run() {
     state_.lenient = args_.lenient;
     state_.timeMs = args_.time;
 
-    int rc = 0;
+    int rc = kExitOk;
+    std::exception_ptr failure;  // rethrown after the window is gone: its exit code
     try {
         if (!args_.file.empty()) open(args_.file);
         else if (!settings_.lastFile.empty() && args_.frames < 0 && args_.script.empty()) open(settings_.lastFile);
@@ -272,10 +266,11 @@ int ViewerApp::run() {
             settings_.width = w;
             settings_.height = h;
         }
-        if (!state_.error.empty() && (args_.frames > 0 || !args_.script.empty())) rc = 1;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "m3g: view: %s\n", e.what());
-        rc = 1;
+        // Unattended runs fail when the file did not open (3) or a frame did not render (5).
+        if (!state_.error.empty() && (args_.frames > 0 || !args_.script.empty()) && rc == kExitOk)
+            rc = state_.error.rfind("render: ", 0) == 0 ? kExitRender : kExitInput;
+    } catch (...) {
+        failure = std::current_exception();
     }
     m3g::Graphics3D::getInstance()->releaseTarget();
     target_->setOverlay(nullptr);
@@ -289,31 +284,43 @@ int ViewerApp::run() {
     if (m3g::vk::validationEnabled()) {
         std::fprintf(stderr, "m3g: view: validation messages: %llu\n",
                      static_cast<unsigned long long>(m3g::vk::validationMessageCount()));
-        if (m3g::vk::validationMessageCount() != 0 && rc == 0) rc = 3;
+        if (m3g::vk::validationMessageCount() != 0 && rc == 0) rc = kExitRender;
     }
+    if (failure) std::rethrow_exception(failure);
     return rc;
 }
 
-}  // namespace
-
-int cmdView(std::span<const std::string_view> argv) {
-    ViewArgs args;
-    try {
-        args = parse(argv);
-    } catch (const CliError& e) {
-        std::fprintf(stderr, "m3g: %s\n", e.what());
-        return 2;
-    }
-    if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY")) {
-        std::fprintf(stderr, "m3g: view: no display (DISPLAY/WAYLAND_DISPLAY unset); use `m3g render` headless, or "
-                             "xvfb-run m3g view ...\n");
-        return 1;
-    }
+int runView(const ViewArgs& args) {
+    if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY"))
+        throw RenderError("no display (DISPLAY/WAYLAND_DISPLAY unset); use `m3g render` headless, or xvfb-run m3g view ...");
     Settings settings = Settings::load();
     ViewerApp app(args, settings);
     const int rc = app.run();
     if (args.frames < 0 && args.script.empty()) settings.save();
     return rc;
+}
+
+}  // namespace
+
+void addViewCommand(CLI::App& parent, CommandTable& table) {
+    CLI::App* app = addCommandApp(parent, "view",
+                                  "the desktop viewer for .m3g, PNG, JPEG or a game .jar (needs a display; docs/viewer.md)");
+    auto f = std::make_shared<ViewFlags>();
+    app->add_option("file", f->file, "the file to open (default: the last one)")->type_name("FILE");
+    app->add_option("--size", f->size, "window size (default: the last one, or 1024x768)")->type_name("WxH");
+    app->add_option("--time", f->time, "world time to start at, ms (default 0)")->type_name("MS");
+    app->add_option("--camera-index", f->camera, "look through the file's I-th Camera (0-based; -1: the viewer's orbit camera)")
+        ->type_name("I");
+    app->add_flag("--no-ui", f->noUi, "hide the panels");
+    app->add_flag("--lenient", f->lenient, "accept the exporter faults seen in real files (LoaderOptions.lenient)");
+    app->add_option("--frames", f->frames, "draw N frames and exit (unattended; with --screenshot, the last is saved)")
+        ->type_name("N");
+    app->add_option("--screenshot", f->screenshot, "save the 3D view after the frames (.png or .jpg; implies --frames 1)")
+        ->type_name("OUT.png");
+    app->add_option("--script", f->script, "run the commands of FILE, unattended (docs/viewer.md)")->type_name("FILE");
+    app->add_flag("--no-vsync", f->noVsync, "present without waiting for vertical sync");
+    app->add_flag("--no-headlight", f->noHeadlight, "no light at the orbit camera");
+    table[app] = [f] { return runView(finish(*f)); };
 }
 
 }  // namespace m3gcli
