@@ -2,6 +2,8 @@
 // (defined in cmd_export.cpp): pose the loaded scene, export, write.
 #pragma once
 
+#include "GltfExport.h"
+
 #include <string>
 
 #include <m3g/Loader.h>
@@ -17,6 +19,7 @@ bool isGltfPath(const std::string& path);
 /// `output` (.glb or .gltf; `separateBin`: the buffer beside a .gltf).
 /// Warnings go to stderr unless `quiet`. Throws CliError for --separate-bin
 /// with .glb, OutputError when the file cannot be written.
-void exportToGltf(const m3g::LoadResult& loaded, const std::string& output, int time, bool separateBin, bool quiet);
+void exportToGltf(const m3g::LoadResult& loaded, const std::string& output, int time, bool separateBin, bool quiet,
+                  const gltf::ExportOptions& options = {});
 
 }  // namespace m3gcli

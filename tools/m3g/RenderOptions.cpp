@@ -1,5 +1,7 @@
 #include "RenderOptions.h"
 
+#include "UpAxis.h"
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -66,8 +68,11 @@ void addRenderOptions(CLI::App& app, RenderFlags& f) {
     app.add_option("--frames", f.frames, "an animation sequence of N frames")->type_name("N");
     app.add_option("--fps", f.fps, "frames per second of the sequence (default 30): frame k at time + k*1000/F")
         ->type_name("F");
-    app.add_option("--turntable", f.turntable, "N frames orbiting the camera around the scene's vertical axis")
+    app.add_option("--turntable", f.turntable, "N frames orbiting the camera around the scene's up axis")
         ->type_name("N");
+    app.add_option("--up", f.up, "the scene's up axis for --turntable: auto (the active camera's up, default) or "
+                                 "+X, -X, +Y, -Y, +Z, -Z")
+        ->type_name("AXIS");
     app.add_option("--camera-index", f.cameraIndex, "render through the file's I-th Camera (0-based, file order)")
         ->type_name("I");
     app.add_option("--background", f.background,
@@ -108,6 +113,7 @@ RenderOptions finishRenderOptions(const RenderFlags& f) {
         r.fps = *x;
     }
     if (!f.turntable.empty()) r.turntable = parseIntOption("--turntable", f.turntable, 1, "a positive integer");
+    r.up = parseUpOption(f.up);
     if (!f.cameraIndex.empty())
         r.cameraIndex = parseIntOption("--camera-index", f.cameraIndex, 0, "a Camera's index (0, 1, ...)");
     if (!f.background.empty()) {

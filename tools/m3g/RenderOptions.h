@@ -3,6 +3,7 @@
 // output naming of frame sequences. Part of m3g_cli_support.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -22,6 +23,8 @@ struct RenderOptions {
     int frames = 0;       ///< --frames N: an animation sequence of N frames (0: one image)
     float fps = 30.0f;    ///< --fps F: frame k is at time + round(k * 1000 / F)
     int turntable = 0;    ///< --turntable N: N frames orbiting the bounds centre (0: off)
+    /// --up: the axis the turntable turns about; nullopt (auto): the scene's (UpAxis.h).
+    std::optional<std::array<float, 3>> up;
     std::optional<int> cameraIndex;            ///< --camera-index I (0-based, file order)
     std::optional<std::uint32_t> background;   ///< --background, as 0xAARRGGBB
     std::string reference;                     ///< --reference REF.png
@@ -37,7 +40,7 @@ struct RenderOptions {
 /// The command line of `m3g render` as given: CLI11 fills it,
 /// finishRenderOptions says what it means. An empty value: not given.
 struct RenderFlags {
-    std::string input, output, size, time, frames, fps, turntable, cameraIndex, background, reference, threshold,
+    std::string input, output, size, time, frames, fps, turntable, up, cameraIndex, background, reference, threshold,
         maxShare, minPsnr;
     bool align = false, lenient = false;
 };

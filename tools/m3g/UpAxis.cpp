@@ -3,6 +3,8 @@
 #include <cctype>
 #include <cmath>
 
+#include "CliArgs.h"
+
 namespace m3gcli {
 
 using namespace m3g;
@@ -34,6 +36,12 @@ std::optional<Axis> parseAxis(std::string_view text) {
     Axis a{0.0f, 0.0f, 0.0f};
     a[static_cast<std::size_t>(c - 'x')] = sign;
     return a;
+}
+
+std::optional<Axis> parseUpOption(const std::string& text) {
+    if (text.empty() || text == "auto") return std::nullopt;
+    if (const auto a = parseAxis(text)) return a;
+    throw CliError("--up takes auto or an axis (+X, -X, +Y, -Y, +Z, -Z; the sign may be left out), not '" + text + "'");
 }
 
 std::string axisName(const Axis& axis) {

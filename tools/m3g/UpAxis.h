@@ -24,6 +24,9 @@ inline constexpr Axis kUpY{0.0f, 1.0f, 0.0f};
 Axis sceneUp(m3g::World& world);
 /// "x", "+y", "-Z" ... as an Axis; nullopt otherwise. ("auto" is the caller's.)
 std::optional<Axis> parseAxis(std::string_view text);
+/// The value of an --up option: "auto" (nullopt: the scene's own) or an
+/// axis; throws CliError naming the option and the values it takes.
+std::optional<Axis> parseUpOption(const std::string& text);
 /// "+Z", "-Y" ...
 std::string axisName(const Axis& axis);
 /// A rotation taking +Y to `up` (the identity for +Y): for the orbit

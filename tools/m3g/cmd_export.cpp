@@ -13,13 +13,14 @@
 #include "ExportRun.h"
 #include "GltfExport.h"
 #include "InputFile.h"
+#include "UpAxis.h"
 
 namespace m3gcli {
 
 namespace {
 
 struct ExportArgs {
-    std::string file, output, time;
+    std::string file, output, time, up;
     bool lenient = false, separateBin = false, quiet = false;
 };
 
@@ -30,7 +31,8 @@ bool isGltfPath(const std::string& path) {
     return path.ends_with(".glb") || path.ends_with(".gltf");
 }
 
-void exportToGltf(const m3g::LoadResult& loaded, const std::string& output, int time, bool separateBin, bool quiet) {
+void exportToGltf(const m3g::LoadResult& loaded, const std::string& output, int time, bool separateBin, bool quiet,
+                  const gltf::ExportOptions& options) {
     if (!isGltfPath(output)) throw CliError("the output must end in .glb or .gltf, not '" + output + "'");
     if (separateBin && !output.ends_with(".gltf")) throw CliError("--separate-bin applies to .gltf output only");
     std::vector<m3g::Object3D*> roots;
@@ -44,7 +46,7 @@ void exportToGltf(const m3g::LoadResult& loaded, const std::string& output, int 
                          e.what());
         }
     }
-    const gltf::ExportResult result = gltf::exportScene(roots);
+    const gltf::ExportResult result = gltf::exportScene(roots, options);
     if (!quiet)
         for (const auto& w : result.warnings) std::fprintf(stderr, "m3g export: %s\n", w.c_str());
     try {
@@ -67,12 +69,17 @@ void addExportCommand(CLI::App& parent, CommandTable& table) {
     app->add_flag("--lenient", args->lenient, "accept the exporter faults seen in real files (LoaderOptions.lenient)");
     app->add_flag("--separate-bin", args->separateBin, ".gltf: write the buffer to OUT.bin beside it, not a data: URI");
     app->add_flag("-q,--quiet", args->quiet, "print no warnings");
+    app->add_option("--up", args->up, "the scene's up axis, turned to glTF's +Y: auto (the active camera's up, "
+                                      "default) or +X, -X, +Y, -Y, +Z, -Z")
+        ->type_name("AXIS");
     table[app] = [args] {
         const int time = args->time.empty() ? 0 : parseIntOption("--time", args->time, INT_MIN, "an integer number of milliseconds");
         if (!isGltfPath(args->output)) throw CliError("the output must end in .glb or .gltf, not '" + args->output + "'");
+        gltf::ExportOptions options;
+        options.up = parseUpOption(args->up);
         const m3g::LoadResult loaded = loadInput(args->file, args->lenient);
         for (const auto& w : loaded.warnings) std::fprintf(stderr, "m3g export: warning: %s\n", w.c_str());
-        exportToGltf(loaded, args->output, time, args->separateBin, args->quiet);
+        exportToGltf(loaded, args->output, time, args->separateBin, args->quiet, options);
         return int(kExitOk);
     };
 }

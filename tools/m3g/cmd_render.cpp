@@ -22,6 +22,7 @@
 #include "JarArchive.h"
 #include "RenderRun.h"
 #include "SceneRender.h"
+#include "UpAxis.h"
 #include "SceneSetup.h"
 
 namespace m3gcli {
@@ -118,7 +119,10 @@ RgbaImage renderToFiles(const m3g::LoadResult& loaded, const RenderOptions& o, c
         std::array<float, 3> center = scene.center;
         float radius = scene.radius;
         if (!scene.autoFramed) sceneBounds(world, center, radius);
-        orbit.emplace(*world.getActiveCamera(), world, center);
+        const Axis up = o.up ? *o.up : sceneUp(world);
+        if (log) std::fprintf(log, "m3g render: the turntable turns about %s%s\n", axisName(up).c_str(),
+                              o.up ? " (--up)" : " (the active camera's up)");
+        orbit.emplace(*world.getActiveCamera(), world, center, up);
     }
     RgbaImage image;
     bool hinted = false;
