@@ -23,6 +23,14 @@ struct LoaderOptions {
     bool lenient = false;
 };
 
+/// One external reference met by a load (engine extension, not Java API).
+struct ExternalReference {
+    std::string referencedBy;  ///< the file that holds it ("" for a load from bytes)
+    std::string uri;           ///< as written in the file
+    std::string path;          ///< the file it resolved to ("" when it could not resolve)
+    bool loaded = false;       ///< false: skipped by a lenient load (file missing)
+};
+
 /// Everything a load produced (engine extension, not Java API).
 struct LoadResult {
     /// Loaded objects referenced by no other loaded object, in file order
@@ -44,6 +52,9 @@ struct LoadResult {
     /// externally referenced files, prefixed with their name). Always empty
     /// for a strict load.
     std::vector<std::string> warnings;
+    /// Every external reference met, in the order met (those of referenced
+    /// files too, after the reference that loaded them).
+    std::vector<ExternalReference> externalReferences;
 };
 
 /// Reads .m3g files (and PNG and JPEG images) into object graphs. Static only.

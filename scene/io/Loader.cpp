@@ -36,6 +36,8 @@ struct Session {
     std::vector<fs::path> chain;
     /// Warnings of every file, in the order met.
     std::vector<std::string> warnings;
+    /// External references of every file, in the order met.
+    std::vector<ExternalReference> references;
 };
 
 /// Largest file the loader reads (the format's sizes are 32-bit).
@@ -151,12 +153,15 @@ Ref<Object3D> loadExternal(const std::string& uri, const detail::ByteReader& rea
             reader.fail(str("external reference loop: ", chainText(session.chain, canonical)));
 
     auto bytes = readWholeFile(path, context);
+    const std::string referencedBy = session.chain.empty() ? std::string() : session.chain.back().string();
     if (!bytes) {
         const std::string m = str("external reference '", uri, "': file '", path.string(), "' not found");
         if (!session.options.lenient) reader.fail(m);
         reader.warn(m + "; skipped, references to it read as null");
+        session.references.push_back({referencedBy, uri, path.string(), false});
         return nullptr;
     }
+    session.references.push_back({referencedBy, uri, path.string(), true});
     session.chain.push_back(canonical);
     LoadResult nested;
     try {
@@ -248,6 +253,7 @@ LoadResult loadNamed(const std::string& name, const LoaderOptions& options) {
         throw IOException(str(rn.path.string(), ": ", e.what()));
     }
     r.warnings = std::move(session.warnings);
+    r.externalReferences = std::move(session.references);
     return r;
 }
 
@@ -260,6 +266,7 @@ LoadResult loadBytes(std::span<const std::uint8_t> data, int offset, const Loade
     session.options = options;
     LoadResult r = loadData(data.subspan(static_cast<std::size_t>(offset)), "", std::nullopt, session, false);
     r.warnings = std::move(session.warnings);
+    r.externalReferences = std::move(session.references);
     return r;
 }
 

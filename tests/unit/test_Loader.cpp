@@ -878,6 +878,13 @@ TEST(Loader, ExternalReferencesRelativeNestedAndPng) {
     EXPECT_EQ(a->getTexture(0)->getImage(), img);
     ASSERT_EQ(r.roots.size(), 1u);
     EXPECT_EQ(r.roots[0], a);
+    // Each reference listed in file order, with the file it resolved to.
+    ASSERT_EQ(r.externalReferences.size(), 2u);
+    EXPECT_EQ(r.externalReferences[0].uri, "sub/inner.m3g");
+    EXPECT_EQ(std::filesystem::path(r.externalReferences[0].path), (dir.path / "sub" / "inner.m3g").lexically_normal());
+    EXPECT_EQ(r.externalReferences[1].uri, "sub/tex.png");
+    EXPECT_TRUE(r.externalReferences[0].loaded && r.externalReferences[1].loaded);
+    EXPECT_NE(r.externalReferences[0].referencedBy.find("main.m3g"), std::string::npos);
 
     // A file: URI works as the name.
     EXPECT_EQ(Loader::load("file://" + (dir.path / "main.m3g").string()).size(), 1u);
@@ -925,6 +932,9 @@ TEST(Loader, ExternalReferenceMissingStrictAndLenient) {
     EXPECT_NE(r.warnings[0].find("gone.png"), std::string::npos);
     EXPECT_NE(r.warnings[1].find("Texture2D"), std::string::npos);
     ASSERT_EQ(r.roots.size(), 2u);
+    ASSERT_EQ(r.externalReferences.size(), 1u);
+    EXPECT_EQ(r.externalReferences[0].uri, "gone.png");
+    EXPECT_FALSE(r.externalReferences[0].loaded);
 }
 
 TEST(Loader, ExternalReferenceLoopIsDetected) {

@@ -684,3 +684,34 @@ TEST(ObjectDump, NumberingRootsKeepTheFilesIds) {
     const json outside = json::parse(dumpJson(ownRoot, options));
     EXPECT_EQ(outside["objects"][0]["id"], static_cast<int>(whole["objects"].size()));
 }
+
+// `m3g info --json`: the load's header, external references and warnings
+// come first when the dump is given the load.
+TEST(ObjectDump, JsonStartsWithTheLoadsHeaderReferencesAndWarnings) {
+    Ref<Group> group(new Group());
+    LoadResult load;
+    load.versionMajor = 1;
+    load.authoringField = "hand made";
+    load.totalFileSize = 123;
+    load.approximateContentSize = 120;
+    load.hasExternalReferences = true;
+    load.externalReferences.push_back({"/a/main.m3g", "tex.png", "/a/tex.png", false});
+    load.warnings.push_back("external reference 'tex.png': file '/a/tex.png' not found; skipped");
+    m3gcli::DumpOptions options;
+    options.load = &load;
+    Object3D* roots[] = {group.get()};
+    const json doc = json::parse(dumpJson(roots, options));
+    auto it = doc.begin();
+    EXPECT_EQ(it.key(), "file");
+    EXPECT_EQ(doc["file"]["version"], "1.0");
+    EXPECT_EQ(doc["file"]["authoringField"], "hand made");
+    EXPECT_EQ(doc["file"]["totalFileSize"], 123);
+    EXPECT_EQ(doc["file"]["hasExternalReferences"], true);
+    ASSERT_EQ(doc["externalReferences"].size(), 1u);
+    EXPECT_EQ(doc["externalReferences"][0]["uri"], "tex.png");
+    EXPECT_EQ(doc["externalReferences"][0]["loaded"], false);
+    ASSERT_EQ(doc["warnings"].size(), 1u);
+    EXPECT_EQ(doc["objectCount"], 1);
+    // Without the load, the document is the objects alone.
+    EXPECT_FALSE(json::parse(dumpJson(roots)).contains("file"));
+}

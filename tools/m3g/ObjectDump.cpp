@@ -723,6 +723,26 @@ std::string dumpJson(std::span<Object3D* const> roots, const DumpOptions& option
     const Dumper dumper{ids, options};
 
     Json doc = Json::object();
+    if (const m3g::LoadResult* load = options.load) {
+        const bool m3gFile = load->versionMajor || load->versionMinor || load->totalFileSize;
+        Json file = Json::object();
+        file["format"] = m3gFile ? "m3g" : "image";
+        if (m3gFile) {
+            file["version"] = std::to_string(load->versionMajor) + "." + std::to_string(load->versionMinor);
+            file["authoringField"] = load->authoringField;
+            file["totalFileSize"] = load->totalFileSize;
+            file["approximateContentSize"] = load->approximateContentSize;
+            file["hasExternalReferences"] = load->hasExternalReferences;
+        }
+        doc["file"] = std::move(file);
+        Json refs = Json::array();
+        for (const m3g::ExternalReference& e : load->externalReferences)
+            refs.push_back({{"referencedBy", e.referencedBy}, {"uri", e.uri}, {"path", e.path}, {"loaded", e.loaded}});
+        doc["externalReferences"] = std::move(refs);
+        Json warnings = Json::array();
+        for (const std::string& w : load->warnings) warnings.push_back(w);
+        doc["warnings"] = std::move(warnings);
+    }
     doc["objectCount"] = static_cast<int>(objects.size());
     Json rootIds = Json::array();
     for (Object3D* r : roots)

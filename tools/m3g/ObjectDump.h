@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include <m3g/Loader.h>
 #include <m3g/Object3D.h>
 
 namespace m3gcli {
@@ -35,6 +36,10 @@ struct DumpOptions {
     /// only what is reachable from the dumped roots is written. Objects outside
     /// the numbering (e.g. a viewer's own camera) get ids after its last.
     std::vector<m3g::Object3D*> numberingRoots;
+    /// The load that gave the roots (`m3g info --json`): when set, the
+    /// document starts with its "file" header, "externalReferences" and
+    /// "warnings" (see dumpJson).
+    const m3g::LoadResult* load = nullptr;
 };
 
 /// Where an object is in `m3g info`'s numbering of the objects reachable
@@ -55,7 +60,11 @@ std::vector<m3g::Object3D*> collectObjects(std::span<m3g::Object3D* const> roots
 
 /// JSON document, written with nlohmann::json (standard 2-space indented
 /// layout: every member and array element on its own line; deterministic;
-/// members in the order below; floats in the shortest form that reads back as
+/// members in the order below; with DumpOptions::load first
+///   "file": {"format": "m3g"|"image", "version": "1.0", "authoringField",
+///            "totalFileSize", "approximateContentSize", "hasExternalReferences"},
+///   "externalReferences": [{"referencedBy", "uri", "path", "loaded"}...],
+///   "warnings": [the loader's warnings]; floats in the shortest form that reads back as
 /// the same float; no NaN/Infinity: a non-finite float is written as null):
 ///   { "objectCount": N, "roots": [ids], "objects": [ {"id", "class",
 ///     "userID", "userObject", "userParameters", "animationTracks",

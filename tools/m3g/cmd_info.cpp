@@ -80,6 +80,7 @@ int fileInfo(const InfoArgs& args) {
     if (args.json) {
         DumpOptions dump;
         dump.worldTime = time;
+        dump.load = &result;
         std::printf("%s\n", dumpJson(roots, dump).c_str());
         return kExitOk;
     }
@@ -90,6 +91,8 @@ int fileInfo(const InfoArgs& args) {
         std::printf("total file size: %u bytes\n", static_cast<unsigned>(result.totalFileSize));
         std::printf("approximate content size: %u bytes\n", static_cast<unsigned>(result.approximateContentSize));
         std::printf("external references: %s\n", result.hasExternalReferences ? "yes" : "no");
+        for (const m3g::ExternalReference& e : result.externalReferences)
+            std::printf("  %s -> %s%s\n", e.uri.c_str(), e.path.c_str(), e.loaded ? "" : " (missing: skipped)");
     } else {
         std::printf("format: image (PNG or JPEG)\n");
     }
