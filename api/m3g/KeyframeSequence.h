@@ -69,10 +69,10 @@ public:
     /// is <= the duration. The result is cached until the next change.
     void validate() const;
     /// SQUAD sequences: the control quaternions of every valid keyframe
-    /// (8 doubles per key, valid-range order; detail::squadControls), computed
+    /// (8 floats per key, valid-range order; detail::squadControls), computed
     /// on the first call after a change instead of for every sample. Empty
     /// for other interpolations. Call after validate().
-    std::span<const double> squadControls() const;
+    std::span<const float> squadControls() const;
 
 protected:
     KeyframeSequence(const KeyframeSequence& other);
@@ -91,7 +91,7 @@ private:
     std::vector<int> times_;
     std::vector<float> values_;
     mutable bool validated_ = false;
-    mutable std::vector<double> squad_;  // squadControls(), while squadReady_
+    mutable std::vector<float> squad_;  // squadControls(), while squadReady_
     mutable bool squadReady_ = false;
 };
 

@@ -101,7 +101,7 @@ void KeyframeSequence::setRepeatMode(int mode) {
     changed();
 }
 
-std::span<const double> KeyframeSequence::squadControls() const {
+std::span<const float> KeyframeSequence::squadControls() const {
     if (!squadReady_) {
         squad_.clear();
         if (interpolation_ == SQUAD) detail::squadControls(detail::viewOf(*this), squad_);
