@@ -28,6 +28,7 @@ void Appearance::setLayer(int layer) {
 int Appearance::getLayer() const noexcept { return layer_; }
 
 void Appearance::setCompositingMode(CompositingMode* compositingMode) {
+    if (compositingMode_.get() != compositingMode) referencesChanged();
     compositingMode_ = compositingMode;
     touch();
 }
@@ -35,6 +36,7 @@ void Appearance::setCompositingMode(CompositingMode* compositingMode) {
 Ref<CompositingMode> Appearance::getCompositingMode() const { return compositingMode_; }
 
 void Appearance::setFog(Fog* fog) {
+    if (fog_.get() != fog) referencesChanged();
     fog_ = fog;
     touch();
 }
@@ -42,6 +44,7 @@ void Appearance::setFog(Fog* fog) {
 Ref<Fog> Appearance::getFog() const { return fog_; }
 
 void Appearance::setPolygonMode(PolygonMode* polygonMode) {
+    if (polygonMode_.get() != polygonMode) referencesChanged();
     polygonMode_ = polygonMode;
     touch();
 }
@@ -49,6 +52,7 @@ void Appearance::setPolygonMode(PolygonMode* polygonMode) {
 Ref<PolygonMode> Appearance::getPolygonMode() const { return polygonMode_; }
 
 void Appearance::setMaterial(Material* material) {
+    if (material_.get() != material) referencesChanged();
     material_ = material;
     touch();
 }
@@ -57,6 +61,7 @@ Ref<Material> Appearance::getMaterial() const { return material_; }
 
 void Appearance::setTexture(int index, Texture2D* texture) {
     detail::requireIndex(index, getLimits().numTextureUnits, "Appearance::setTexture", "index");
+    if (textures_[static_cast<std::size_t>(index)].get() != texture) referencesChanged();
     textures_[static_cast<std::size_t>(index)] = texture;
     touch();
 }

@@ -36,6 +36,7 @@ void Background::setImage(Image2D* image) {
         cropWidth_ = image->getWidth();
         cropHeight_ = image->getHeight();
     }
+    if (image_.get() != image) referencesChanged();
     image_ = image;
     touch();
 }

@@ -29,6 +29,7 @@ Sprite3D::~Sprite3D() = default;
 Object3D* Sprite3D::duplicateImpl(DuplicateMap&) const { return new Sprite3D(*this); }
 
 void Sprite3D::setAppearance(Appearance* appearance) {
+    if (appearance_.get() != appearance) referencesChanged();
     appearance_ = appearance;
     touch();
 }
@@ -37,6 +38,7 @@ Ref<Appearance> Sprite3D::getAppearance() const { return appearance_; }
 
 void Sprite3D::setImage(Image2D* image) {
     detail::requireNonNull(image, "Sprite3D::setImage", "image");
+    if (image_.get() != image) referencesChanged();
     image_ = image;
     cropX_ = 0;
     cropY_ = 0;
