@@ -134,9 +134,11 @@ protected:
     /// Marks the object changed (bumps the revision).
     void touch() noexcept { ++revision_; }
     /// Called by every method that changes what getReferences returns (the
-    /// attached tracks, an AnimationTrack's controller, children, components,
-    /// images...): the cached animate() plans that may have reached this
-    /// object are rebuilt on their next use.
+    /// attached tracks, an AnimationTrack's controller, children, components)
+    /// unless the references in question can only be to classes with neither
+    /// animatable properties nor references of their own (Image2D,
+    /// VertexArray, CompositingMode, PolygonMode): the cached animate() plans
+    /// that may have reached this object are rebuilt on their next use.
     void referencesChanged() noexcept;
 
     friend class Group;

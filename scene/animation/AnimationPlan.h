@@ -12,14 +12,19 @@
 //
 // When it is rebuilt: a process-wide generation counter is bumped by every
 // change of an object's references or tracks (Object3D::referencesChanged:
-// add/removeAnimationTrack, setController, add/removeChild, setAppearance,
-// setTexture, setBackground, ... — every setter whose object collectReferences
-// lists), but only when that object was ever reached by a plan's walk: an
-// object no plan reached cannot change what a plan reaches. A plan is used
-// only while the counter still has the value it was built at. What a plan
-// does not record is read live at every animate(): controller weights,
-// speeds, positions and active intervals, keyframes, durations, valid ranges,
-// repeat modes. None of that can change what is reachable.
+// add/removeAnimationTrack, AnimationTrack::setController, Group::addChild
+// and removeChild, World::setActiveCamera and setBackground,
+// Mesh::setAppearance, Sprite3D::setAppearance, Appearance::setMaterial,
+// setFog and setTexture), when the reference actually changes and only if
+// that object was ever reached by a plan's walk: an object no plan reached
+// cannot change what a plan reaches. A plan is used only while the counter
+// still has the value it was built at. Replacing an Image2D, a VertexArray,
+// a CompositingMode or a PolygonMode does not bump it: those classes have no
+// animatable property and no references, so they never change what a plan
+// records (a game that swaps a sprite's image every frame keeps its plan).
+// What a plan does not record is read live at every animate(): controller
+// weights, speeds, positions and active intervals, keyframes, durations,
+// valid ranges, repeat modes. None of that can change what is reachable.
 #pragma once
 
 #include <cstdint>

@@ -28,7 +28,6 @@ void Appearance::setLayer(int layer) {
 int Appearance::getLayer() const noexcept { return layer_; }
 
 void Appearance::setCompositingMode(CompositingMode* compositingMode) {
-    if (compositingMode_.get() != compositingMode) referencesChanged();
     compositingMode_ = compositingMode;
     touch();
 }
@@ -44,7 +43,6 @@ void Appearance::setFog(Fog* fog) {
 Ref<Fog> Appearance::getFog() const { return fog_; }
 
 void Appearance::setPolygonMode(PolygonMode* polygonMode) {
-    if (polygonMode_.get() != polygonMode) referencesChanged();
     polygonMode_ = polygonMode;
     touch();
 }

@@ -36,7 +36,6 @@ void Background::setImage(Image2D* image) {
         cropWidth_ = image->getWidth();
         cropHeight_ = image->getHeight();
     }
-    if (image_.get() != image) referencesChanged();
     image_ = image;
     touch();
 }

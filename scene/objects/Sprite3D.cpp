@@ -38,7 +38,6 @@ Ref<Appearance> Sprite3D::getAppearance() const { return appearance_; }
 
 void Sprite3D::setImage(Image2D* image) {
     detail::requireNonNull(image, "Sprite3D::setImage", "image");
-    if (image_.get() != image) referencesChanged();
     image_ = image;
     cropX_ = 0;
     cropY_ = 0;

@@ -37,7 +37,6 @@ Texture2D::~Texture2D() = default;
 
 void Texture2D::setImage(Image2D* image) {
     checkTextureImage(image, "Texture2D::setImage");
-    if (image_.get() != image) referencesChanged();
     image_ = image;
     touch();
 }

@@ -59,7 +59,6 @@ void VertexBuffer::setPositions(VertexArray* positions, float scale, std::span<c
             detail::throwIAE(detail::str(where, ": bias has length ", bias.size(), ", needs at least 3"));
         checkCount(positions, positions_.get(), where);
     }
-    if (positions_.get() != positions) referencesChanged();
     positions_ = positions;
     positionScale_ = scale;
     if (positions && bias.data())
@@ -81,7 +80,6 @@ void VertexBuffer::setTexCoords(int index, VertexArray* texCoords, float scale, 
             detail::throwIAE(detail::str(where, ": bias has length ", bias.size(), ", needs at least ", comps));
         checkCount(texCoords, texCoords_[index].get(), where);
     }
-    if (texCoords_[index].get() != texCoords) referencesChanged();
     texCoords_[index] = texCoords;
     texCoordScale_[index] = scale;
     texCoordBias_[index] = {0, 0, 0};
@@ -98,7 +96,6 @@ void VertexBuffer::setNormals(VertexArray* normals) {
             detail::throwIAE(detail::str(where, ": normals has ", normals->getComponentCount(), " components, needs 3"));
         checkCount(normals, normals_.get(), where);
     }
-    if (normals_.get() != normals) referencesChanged();
     normals_ = normals;
     updateCount();
     touch();
@@ -115,7 +112,6 @@ void VertexBuffer::setColors(VertexArray* colors) {
             detail::throwIAE(detail::str(where, ": colors has ", comps, " components, needs 3 or 4"));
         checkCount(colors, colors_.get(), where);
     }
-    if (colors_.get() != colors) referencesChanged();
     colors_ = colors;
     updateCount();
     touch();

@@ -347,3 +347,50 @@ TEST(KeyframeSampler, SquadControlsCachedGiveTheSameBitsAndFollowChanges) {
     auto linear = makeSeq(KeyframeSequence::LINEAR, KeyframeSequence::LOOP, 10, {{0, {1}}, {5, {2}}});
     EXPECT_TRUE(linear->squadControls().empty());
 }
+
+// A segment guess (what animate() passes: the last sample's segment) never
+// changes the result: right, stale, out-of-range and negative guesses give
+// the same bits and validity as no guess, and the segment handed back is
+// the one the binary search finds. Coincident key times, a wrapping valid
+// range and both repeat modes included.
+TEST(KeyframeSampler, SegmentGuessGivesTheSameResultAsTheSearch) {
+    auto s = makeSeq(KeyframeSequence::SQUAD, KeyframeSequence::LOOP, 100,
+                     {{0, {0, 0, 0, 1}},
+                      {15, {0.3f, 0.1f, 0, 0.9f}},
+                      {15, {0, 0.7f, 0.2f, 0.6f}},
+                      {70, {-0.5f, 0, 0.5f, 0.5f}},
+                      {90, {0.1f, -0.2f, 0.9f, 0.3f}}});
+    auto l = makeSeq(KeyframeSequence::LINEAR, KeyframeSequence::CONSTANT, 60,
+                     {{5, {1}}, {10, {2}}, {10, {3}}, {30, {4}}, {31, {5}}, {50, {6}}});
+    auto compare = [](const KeyframeSequence& seq, const char* what) {
+        seq.validate();
+        detail::KeyframeView view = detail::viewOf(seq);
+        view.squad = seq.squadControls();
+        int carried = 0;  // as animate() carries it from sample to sample
+        for (double t = -130.0; t <= 260.0; t += 0.75) {
+            std::vector<float> plain(4), guessed(4), carriedOut(4);
+            const auto v0 = detail::sampleKeyframes(view, t, plain);
+            for (int guess : {-3, 0, 1, 2, 3, 4, 5, 6, 99}) {
+                int g = guess;
+                const auto v1 = detail::sampleKeyframes(view, t, guessed, &g);
+                ASSERT_EQ(plain, guessed) << what << ", time " << t << ", guess " << guess;
+                ASSERT_EQ(v0.forward, v1.forward);
+                ASSERT_EQ(v0.backward, v1.backward);
+            }
+            detail::sampleKeyframes(view, t, carriedOut, &carried);
+            ASSERT_EQ(plain, carriedOut) << what << ", time " << t;
+        }
+    };
+    compare(*s, "squad loop");
+    compare(*l, "linear constant");
+    s->setValidRange(3, 1);  // keys 3, 4, 0, 1: times 70, 90, 0, 15 do not rise: fix them
+    const float k3[4] = {-0.5f, 0, 0.5f, 0.5f}, k4[4] = {0.1f, -0.2f, 0.9f, 0.3f};
+    const float k0[4] = {0, 0, 0, 1}, k1[4] = {0.3f, 0.1f, 0, 0.9f};
+    s->setKeyframe(3, 0, k3);
+    s->setKeyframe(4, 10, k4);
+    s->setKeyframe(0, 20, k0);
+    s->setKeyframe(1, 50, k1);
+    compare(*s, "wrapping valid range");
+    s->setRepeatMode(KeyframeSequence::CONSTANT);
+    compare(*s, "wrapping valid range, constant");
+}
