@@ -203,7 +203,8 @@ int AnimationPlan::apply(int worldTime) {
                 const KeyframeSequence& seq = *track.sequence;
                 seq.validate();
                 KeyframeView view = viewOf(seq);
-                view.squad = seq.squadControls();  // empty unless SQUAD
+                view.squad = seq.squadControls();   // empty unless SQUAD
+                view.arcs = seq.quaternionArcs();  // empty unless SLERP or SQUAD
                 const SampleValidity sv = sampleKeyframes(view, double(c.getPosition(worldTime)), sample, &track.segment);
                 validity = std::min(validity, worldValidity(sv, c.getSpeed()));
                 if (start != stop) validity = std::min(validity, double(stop) - double(worldTime));

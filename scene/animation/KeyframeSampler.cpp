@@ -184,6 +184,18 @@ Quatf squadControl(const KeyframeView& k, int j, int which) {
     return {c[0], c[1], c[2], c[3]};
 }
 
+Arc arcFrom(std::span<const float> arcs, int index) {
+    const float* a = arcs.data() + std::size_t(index) * kArcFloats;
+    return {{a[0], a[1], a[2], a[3]}, a[4], static_cast<Arc::Kind>(int(a[5]))};
+}
+
+void putArc(const Arc& arc, float* out) {
+    out[0] = arc.v.x, out[1] = arc.v.y, out[2] = arc.v.z, out[3] = arc.v.w;
+    out[4] = arc.half;
+    out[5] = float(int(arc.kind));
+    out[6] = out[7] = 0.0f;
+}
+
 void writeQuat(const Quatf& q, std::span<float> out) {
     out[0] = q.x;
     out[1] = q.y;
@@ -221,6 +233,26 @@ void squadControls(const KeyframeView& k, std::vector<float>& out) {
         float* c = out.data() + std::size_t(j) * 8;
         c[0] = a.x, c[1] = a.y, c[2] = a.z, c[3] = a.w;
         c[4] = b.x, c[5] = b.y, c[6] = b.z, c[7] = b.w;
+    }
+}
+
+void keyframeArcs(const KeyframeView& k, std::vector<float>& out) {
+    out.clear();
+    const bool squad = k.interpolation == KeyframeSequence::SQUAD;
+    if (!squad && k.interpolation != KeyframeSequence::SLERP) return;
+    const ValidKeys keys(k);
+    const int perKey = squad ? 2 : 1;
+    out.resize(std::size_t(keys.count()) * perKey * kArcFloats);
+    for (int j = 0; j < keys.count(); ++j) {
+        const int j1 = keys.next(j);
+        float* dst = out.data() + std::size_t(j) * perKey * kArcFloats;
+        putArc(arcOf(quatfAt(keys.value(j)), quatfAt(keys.value(j1))), dst);
+        if (squad) {
+            const bool cached = !k.squad.empty();
+            const Quatf a = cached ? squadControl(k, j, 0) : toFloat(squadA(keys, j));
+            const Quatf b = cached ? squadControl(k, j1, 1) : toFloat(squadB(keys, j1));
+            putArc(arcOf(a, b), dst + kArcFloats);
+        }
     }
 }
 
@@ -273,7 +305,9 @@ SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<flo
         for (int c = 0; c < comps; ++c) out[c] = float((1.0 - u) * p0[c] + u * p1[c]);
         break;
     case KeyframeSequence::SLERP:
-        writeQuat(slerp(quatfAt(p0), quatfAt(p1), float(u)), out);
+        writeQuat(k.arcs.empty() ? slerp(quatfAt(p0), quatfAt(p1), float(u))
+                                 : arcAt(quatfAt(p0), arcFrom(k.arcs, j), float(u)),
+                  out);
         break;
     case KeyframeSequence::SPLINE: {
         const double u2 = u * u, u3 = u2 * u;
@@ -286,10 +320,21 @@ SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<flo
         break;
     }
     case KeyframeSequence::SQUAD: {
+        // slerp(slerp(q0, q1, u), slerp(A_j, B_j1, u), 2u(1 - u)), the two
+        // inner arcs from the view when it has them.
         const bool cached = !k.squad.empty();
         const Quatf a = cached ? squadControl(k, j, 0) : toFloat(squadA(keys, j));
-        const Quatf b = cached ? squadControl(k, j1, 1) : toFloat(squadB(keys, j1));
-        writeQuat(squad(quatfAt(p0), quatfAt(p1), a, b, float(u)), out);
+        const float uf = float(u);
+        Quatf keyPoint, controlPoint;
+        if (!k.arcs.empty()) {
+            keyPoint = arcAt(quatfAt(p0), arcFrom(k.arcs, 2 * j), uf);
+            controlPoint = arcAt(a, arcFrom(k.arcs, 2 * j + 1), uf);
+        } else {
+            const Quatf b = cached ? squadControl(k, j1, 1) : toFloat(squadB(keys, j1));
+            keyPoint = slerp(quatfAt(p0), quatfAt(p1), uf);
+            controlPoint = slerp(a, b, uf);
+        }
+        writeQuat(slerp(keyPoint, controlPoint, 2.0f * uf * (1.0f - uf)), out);
         break;
     }
     default:

@@ -27,7 +27,16 @@ struct KeyframeView {
     /// floats per key, x y z w each, in valid-range order) as
     /// squadControls() computes them; empty: computed per sample.
     std::span<const float> squad = {};
+    /// SLERP and SQUAD: the part of each segment's SLERPs that does not
+    /// depend on the time (keyframeArcs: kArcFloats floats per arc, one arc
+    /// per valid key for SLERP, two for SQUAD), as
+    /// KeyframeSequence::quaternionArcs() computes them; empty: computed per
+    /// sample, with the same result.
+    std::span<const float> arcs = {};
 };
+
+/// Floats per arc in KeyframeView::arcs.
+inline constexpr int kArcFloats = 8;
 
 /// View of a sequence (no copy; valid while the sequence is unchanged).
 KeyframeView viewOf(const KeyframeSequence& sequence) noexcept;
@@ -51,6 +60,15 @@ struct SampleValidity {
 /// Computed in double (logarithms and exponentials of quaternions), rounded
 /// to float once.
 void squadControls(const KeyframeView& k, std::vector<float>& out);
+
+/// The arcs of every valid key of a valid SLERP or SQUAD view into `out`
+/// (KeyframeView::arcs; nothing for other interpolations): for SLERP the arc
+/// of the segment from key j to the next; for SQUAD that one, then the arc
+/// from the control quaternion A_j to B of the next key (from k.squad, or
+/// computed as squadControls would). Once per change of the sequence
+/// instead of per sample: a sample then needs only a sine and a cosine per
+/// SLERP it takes from here (two of the three of a SQUAD sample).
+void keyframeArcs(const KeyframeView& k, std::vector<float>& out);
 
 /// Samples a valid view (see keyframeProblem) at sequence time `time` into
 /// `out` (at least k.components floats). Quaternion results (SLERP, SQUAD)

@@ -79,33 +79,49 @@ inline CosSin cosSinHalfTurn(float theta) {
     return {-2.0f * sinX * cosX, 1.0f - 2.0f * sinX * sinX};
 }
 
-/// The normalised linear interpolation a + u (b - a), for nearly equal a, b.
-Quatf nlerp(const Quatf& a, const Quatf& diff, float u) noexcept;
-/// The SLERP of a and b more than 168 degrees apart on the 4D sphere, with
-/// the direction of the arc formed in double (Slerp.cpp says why).
-Quatf slerpNearlyOpposite(const Quatf& a, const Quatf& b, float u, float d, float p) noexcept;
-
 }  // namespace slerp_impl
 
-/// The point at fraction `u` (0..1) of the great arc from `a` to `b` (unit
-/// quaternions) as given: no sign flip towards the shorter arc, as Nokia's
-/// M3G implementation (reference) does. Nearly equal quaternions (cosine
-/// above 1 - 1e-9) take the normalised linear interpolation; exactly
-/// opposite ones (cosine below -1 + 1e-9) turn through a quaternion
-/// perpendicular to `a`, (-a.y, a.x, -a.w, a.z), so the path is still a
-/// half circle. Unit length to float rounding (not renormalised: within
-/// about 4e-7 of 1).
-inline Quatf slerp(const Quatf& a, const Quatf& b, float u) noexcept {
+/// The part of slerp(a, b, u) that does not depend on u, so that a sampler
+/// can compute it once per keyframe segment: the direction of the arc and
+/// half its angle.
+struct Arc {
+    enum Kind : int {
+        Circle,       // cos theta a + sin theta v, v the unit direction
+        Linear,       // a + u v normalised, v = b - a (nearly equal a, b)
+        Renormalise,  // as Circle, then normalised (nearly opposite a, b)
+    };
+    Quatf v;
+    float half;  // half the angle between a and b (Circle, Renormalise)
+    Kind kind;
+};
+
+namespace slerp_impl {
+/// arcOf for a and b more than 168 degrees apart on the 4D sphere, with the
+/// direction of the arc formed in double (Slerp.cpp says why).
+Arc arcNearlyOpposite(const Quatf& a, const Quatf& b, float d, float p) noexcept;
+/// a + u v normalised.
+Quatf nlerp(const Quatf& a, const Quatf& v, float u) noexcept;
+/// cos theta a + sin theta v normalised, theta = 2 u half.
+Quatf renormalisedArcPoint(const Quatf& a, const Quatf& v, float half, float u) noexcept;
+}  // namespace slerp_impl
+
+/// The arc from `a` to `b` (unit quaternions) as given: no sign flip towards
+/// the shorter arc, as Nokia's M3G implementation (reference) does. Nearly
+/// equal quaternions (cosine above 1 - 1e-9) take the normalised linear
+/// interpolation; exactly opposite ones (cosine below -1 + 1e-9) turn
+/// through a quaternion perpendicular to `a`, (-a.y, a.x, -a.w, a.z), so
+/// the path is still a half circle.
+inline Arc arcOf(const Quatf& a, const Quatf& b) noexcept {
     using namespace slerp_impl;
     const Quatf diff{b.x - a.x, b.y - a.y, b.z - a.z, b.w - a.w};
     const Quatf sum{a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w};
     const float d2 = dot(diff, diff);  // |a - b|^2 = 4 sin^2(omega/2) = 2 - 2 cos omega
     const float p2 = dot(sum, sum);    // |a + b|^2 = 4 cos^2(omega/2) = 2 + 2 cos omega
     if (d2 < kNearlyEqual) [[unlikely]]
-        return nlerp(a, diff, u);
+        return {diff, 0.0f, Arc::Linear};
     const float d = std::sqrt(d2), p = std::sqrt(p2);
     if (p2 < kOppositeBand) [[unlikely]]
-        return slerpNearlyOpposite(a, b, u, d, p);
+        return arcNearlyOpposite(a, b, d, p);
     // The direction from a towards b in their plane, b - (a.b) a, written
     // as (b - a) + (1 - a.b) a with 1 - a.b = |a - b|^2 / 2 when a and b are
     // close (or a + b - (1 + a.b) a when they are far apart), so that it
@@ -113,10 +129,26 @@ inline Quatf slerp(const Quatf& a, const Quatf& b, float u) noexcept {
     // and the arc scales it by sin(u omega), which is no larger. Its length
     // is sin omega = 2 sin(omega/2) cos(omega/2) = d p / 2.
     const Quatf v = d2 <= p2 ? combine(1.0f, diff, 0.5f * d2, a) : combine(1.0f, sum, -0.5f * p2, a);
-    const float vScale = 2.0f / (d * p);
-    const CosSin t = cosSinHalfTurn(2.0f * u * atan2Positive(d, p));
-    return combine(t.c, a, t.s * vScale, v);
+    const float scale = 2.0f / (d * p);
+    return {{v.x * scale, v.y * scale, v.z * scale, v.w * scale}, atan2Positive(d, p), Arc::Circle};
 }
+
+/// The point at fraction `u` (0..1) of `arc`, which starts at `a`. Unit
+/// length to float rounding (Circle is not renormalised: within about 4e-7
+/// of 1).
+inline Quatf arcAt(const Quatf& a, const Arc& arc, float u) noexcept {
+    using namespace slerp_impl;
+    if (arc.kind == Arc::Circle) [[likely]] {
+        const CosSin t = cosSinHalfTurn(2.0f * u * arc.half);
+        return combine(t.c, a, t.s, arc.v);
+    }
+    if (arc.kind == Arc::Linear) return nlerp(a, arc.v, u);
+    return renormalisedArcPoint(a, arc.v, arc.half, u);
+}
+
+/// The point at fraction `u` (0..1) of the great arc from `a` to `b`:
+/// arcAt(a, arcOf(a, b), u).
+inline Quatf slerp(const Quatf& a, const Quatf& b, float u) noexcept { return arcAt(a, arcOf(a, b), u); }
 
 /// SQUAD between q0 and q1 with control quaternions a (outgoing at q0) and
 /// b (incoming at q1): slerp(slerp(q0, q1, u), slerp(a, b, u), 2u(1 - u)).

@@ -303,9 +303,10 @@ TEST(KeyframeSampler, SquadLoopFourKeysNonConstantRate) {
     expectQuat(sampleN(*s, 40), zQuat(0));
 }
 
-// SQUAD control quaternions computed once per change of the sequence
-// (KeyframeSequence::squadControls, as animate() samples) give the same
-// bits as computing them per sample; every kind of change refreshes them.
+// SQUAD control quaternions and arcs computed once per change of the sequence
+// (KeyframeSequence::squadControls and quaternionArcs, as animate() samples)
+// give the same bits as computing them per sample; every kind of change
+// refreshes them.
 TEST(KeyframeSampler, SquadControlsCachedGiveTheSameBitsAndFollowChanges) {
     auto s = makeSeq(KeyframeSequence::SQUAD, KeyframeSequence::LOOP, 100,
                      {{0, {0, 0, 0, 1}},
@@ -319,11 +320,18 @@ TEST(KeyframeSampler, SquadControlsCachedGiveTheSameBitsAndFollowChanges) {
         detail::KeyframeView cached = perSample;
         cached.squad = s->squadControls();
         ASSERT_FALSE(cached.squad.empty()) << what;
+        detail::KeyframeView withArcs = cached;  // as animate() samples
+        withArcs.arcs = s->quaternionArcs();
+        ASSERT_FALSE(withArcs.arcs.empty()) << what;
         for (double t = -30.0; t <= 230.0; t += 1.7) {
-            float a[4], b[4];
+            float a[4], b[4], c[4];
             detail::sampleKeyframes(perSample, t, a);
             detail::sampleKeyframes(cached, t, b);
-            for (int c = 0; c < 4; ++c) ASSERT_EQ(a[c], b[c]) << what << ", time " << t << ", component " << c;
+            detail::sampleKeyframes(withArcs, t, c);
+            for (int i = 0; i < 4; ++i) {
+                ASSERT_EQ(a[i], b[i]) << what << ", time " << t << ", component " << i;
+                ASSERT_EQ(a[i], c[i]) << what << ", arcs, time " << t << ", component " << i;
+            }
         }
     };
     expectSameBits("loop");
@@ -346,6 +354,7 @@ TEST(KeyframeSampler, SquadControlsCachedGiveTheSameBitsAndFollowChanges) {
     expectSameBits("after setDuration");
     auto linear = makeSeq(KeyframeSequence::LINEAR, KeyframeSequence::LOOP, 10, {{0, {1}}, {5, {2}}});
     EXPECT_TRUE(linear->squadControls().empty());
+    EXPECT_TRUE(linear->quaternionArcs().empty());
 }
 
 // A segment guess (what animate() passes: the last sample's segment) never
@@ -393,4 +402,34 @@ TEST(KeyframeSampler, SegmentGuessGivesTheSameResultAsTheSearch) {
     compare(*s, "wrapping valid range");
     s->setRepeatMode(KeyframeSequence::CONSTANT);
     compare(*s, "wrapping valid range, constant");
+}
+
+// The same for SLERP: arcs kept per segment, nearly equal and exactly
+// opposite neighbours (the two special arcs) included.
+TEST(KeyframeSampler, SlerpArcsCachedGiveTheSameBitsAndFollowChanges) {
+    auto s = makeSeq(KeyframeSequence::SLERP, KeyframeSequence::LOOP, 100,
+                     {{0, {0, 0, 0, 1}},
+                      {15, {0, 0, 0, -1}},
+                      {40, {0, 0.7f, 0.2f, 0.6f}},
+                      {70, {0, 0.7f, 0.2f, 0.6f}},
+                      {90, {-0.5f, 0, 0.5f, 0.5f}}});
+    auto expectSameBits = [&](const char* what) {
+        s->validate();
+        const detail::KeyframeView perSample = detail::viewOf(*s);
+        detail::KeyframeView cached = perSample;
+        cached.arcs = s->quaternionArcs();
+        ASSERT_FALSE(cached.arcs.empty()) << what;
+        for (double t = -30.0; t <= 230.0; t += 1.3) {
+            float a[4], b[4];
+            detail::sampleKeyframes(perSample, t, a);
+            detail::sampleKeyframes(cached, t, b);
+            for (int c = 0; c < 4; ++c) ASSERT_EQ(a[c], b[c]) << what << ", time " << t << ", component " << c;
+        }
+    };
+    expectSameBits("loop");
+    const float q[4] = {0.6f, 0, 0, -0.8f};
+    s->setKeyframe(3, 75, q);
+    expectSameBits("after setKeyframe");
+    s->setValidRange(1, 3);
+    expectSameBits("after setValidRange");
 }
