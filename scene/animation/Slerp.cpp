@@ -17,8 +17,6 @@ Quatf normalized(const Quatf& q) {
 
 }  // namespace
 
-Quatf nlerp(const Quatf& a, const Quatf& v, float u) noexcept { return normalized(combine(1.0f, a, u, v)); }
-
 Quatf renormalisedArcPoint(const Quatf& a, const Quatf& v, float half, float u) noexcept {
     const CosSin t = cosSinHalfTurn(2.0f * u * half);
     return normalized(combine(t.c, a, t.s, v));

@@ -87,7 +87,7 @@ inline CosSin cosSinHalfTurn(float theta) {
 struct Arc {
     enum Kind : int {
         Circle,       // cos theta a + sin theta v, v the unit direction
-        Linear,       // a + u v normalised, v = b - a (nearly equal a, b)
+        Linear,       // a + u v, v = b - a (nearly equal a, b)
         Renormalise,  // as Circle, then normalised (nearly opposite a, b)
     };
     Quatf v;
@@ -99,18 +99,16 @@ namespace slerp_impl {
 /// arcOf for a and b more than 168 degrees apart on the 4D sphere, with the
 /// direction of the arc formed in double (Slerp.cpp says why).
 Arc arcNearlyOpposite(const Quatf& a, const Quatf& b, float d, float p) noexcept;
-/// a + u v normalised.
-Quatf nlerp(const Quatf& a, const Quatf& v, float u) noexcept;
 /// cos theta a + sin theta v normalised, theta = 2 u half.
 Quatf renormalisedArcPoint(const Quatf& a, const Quatf& v, float half, float u) noexcept;
 }  // namespace slerp_impl
 
 /// The arc from `a` to `b` (unit quaternions) as given: no sign flip towards
 /// the shorter arc, as Nokia's M3G implementation (reference) does. Nearly
-/// equal quaternions (cosine above 1 - 1e-9) take the normalised linear
-/// interpolation; exactly opposite ones (cosine below -1 + 1e-9) turn
-/// through a quaternion perpendicular to `a`, (-a.y, a.x, -a.w, a.z), so
-/// the path is still a half circle.
+/// equal quaternions (cosine above 1 - 1e-9) take the linear interpolation
+/// (unit to float resolution there); exactly opposite ones (cosine below
+/// -1 + 1e-9) turn through a quaternion perpendicular to `a`,
+/// (-a.y, a.x, -a.w, a.z), so the path is still a half circle.
 inline Arc arcOf(const Quatf& a, const Quatf& b) noexcept {
     using namespace slerp_impl;
     const Quatf diff{b.x - a.x, b.y - a.y, b.z - a.z, b.w - a.w};
@@ -142,7 +140,11 @@ inline Quatf arcAt(const Quatf& a, const Arc& arc, float u) noexcept {
         const CosSin t = cosSinHalfTurn(2.0f * u * arc.half);
         return combine(t.c, a, t.s, arc.v);
     }
-    if (arc.kind == Arc::Linear) return nlerp(a, arc.v, u);
+    // |a + u (b - a)|^2 = 1 - u (1 - u) |a - b|^2 for unit a and b, and
+    // |a - b|^2 < 2e-9 here: within 3e-10 of 1, below float's resolution,
+    // so renormalising would change nothing. Frequent: a bone that keeps
+    // its rotation from one key to the next.
+    if (arc.kind == Arc::Linear) return combine(1.0f, a, u, arc.v);
     return renormalisedArcPoint(a, arc.v, arc.half, u);
 }
 
