@@ -313,10 +313,19 @@ SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<flo
         const double u2 = u * u, u3 = u2 * u;
         const double h00 = 2 * u3 - 3 * u2 + 1, h01 = -2 * u3 + 3 * u2;
         const double h10 = u3 - 2 * u2 + u, h11 = u3 - u2;
-        const double sOut = keys.outScale(j), sIn = keys.inScale(j1);
-        for (int c = 0; c < comps; ++c)
-            out[c] = float(h00 * p0[c] + h01 * p1[c] + h10 * tangent(keys, j, c, sOut) +
-                           h11 * tangent(keys, j1, c, sIn));
+        // tangent(keys, j, c, sOut) and tangent(keys, j1, c, sIn) with the
+        // neighbours' rows found once (next(j) is j1, prev(j1) is j) rather
+        // than per component, where every store to `out` (which may alias
+        // the key values, as far as the compiler knows) made it find them
+        // again. The same operations in the same order: the same bits.
+        const double sOut = keys.outScale(j) * 0.5, sIn = keys.inScale(j1) * 0.5;
+        const float* before = keys.value(keys.prev(j));
+        const float* after = keys.value(keys.next(j1));
+        for (int c = 0; c < comps; ++c) {
+            const double t0 = sOut * (double(p1[c]) - double(before[c]));
+            const double t1 = sIn * (double(after[c]) - double(p0[c]));
+            out[c] = float(h00 * p0[c] + h01 * p1[c] + h10 * t0 + h11 * t1);
+        }
         break;
     }
     case KeyframeSequence::SQUAD: {
