@@ -69,10 +69,16 @@ public:
     /// is <= the duration. The result is cached until the next change.
     void validate() const;
     /// SQUAD sequences: the control quaternions of every valid keyframe
-    /// (8 doubles per key, valid-range order; detail::squadControls), computed
+    /// (8 floats per key, valid-range order; detail::squadControls), computed
     /// on the first call after a change instead of for every sample. Empty
     /// for other interpolations. Call after validate().
-    std::span<const double> squadControls() const;
+    std::span<const float> squadControls() const;
+    /// SLERP and SQUAD sequences: the part of each segment's SLERPs that
+    /// does not depend on the time (detail::keyframeArcs: 8 floats per arc,
+    /// one per valid key for SLERP, two for SQUAD), computed on the first
+    /// call after a change. Empty for other interpolations. Call after
+    /// validate().
+    std::span<const float> quaternionArcs() const;
 
 protected:
     KeyframeSequence(const KeyframeSequence& other);
@@ -91,8 +97,10 @@ private:
     std::vector<int> times_;
     std::vector<float> values_;
     mutable bool validated_ = false;
-    mutable std::vector<double> squad_;  // squadControls(), while squadReady_
-    mutable bool squadReady_ = false;
+    void prepareQuaternions() const;
+    mutable std::vector<float> squad_;  // squadControls(), while quaternionsReady_
+    mutable std::vector<float> arcs_;   // quaternionArcs(), while quaternionsReady_
+    mutable bool quaternionsReady_ = false;
 };
 
 }  // namespace m3g

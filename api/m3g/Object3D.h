@@ -7,6 +7,7 @@
 #include <any>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <span>
 #include <unordered_map>
 #include <unordered_set>
@@ -17,6 +18,10 @@
 #include <m3g/Ref.h>
 
 namespace m3g {
+
+namespace detail {
+class AnimationPlan;
+}
 
 /// User parameters read from a file: parameter ID -> bytes. The Loader stores
 /// a `std::shared_ptr<const UserParameters>` in the user object (the Java
@@ -30,6 +35,9 @@ public:
     /// Applies the animation tracks of this object and of every object
     /// reachable from it at `worldTime`; returns the validity interval in ms
     /// (0x7FFFFFFF = indefinitely). JSR-184 1.1, Object3D.animate.
+    /// The objects and tracks reached are found on the first call and kept
+    /// until an object reached changes its references or tracks; later calls
+    /// only sample and blend, and do not allocate.
     int animate(int worldTime);
 
     /// A copy of this object: components are shared, node subtrees are copied,
@@ -125,9 +133,17 @@ protected:
 
     /// Marks the object changed (bumps the revision).
     void touch() noexcept { ++revision_; }
+    /// Called by every method that changes what getReferences returns (the
+    /// attached tracks, an AnimationTrack's controller, children, components)
+    /// unless the references in question can only be to classes with neither
+    /// animatable properties nor references of their own (Image2D,
+    /// VertexArray, CompositingMode, PolygonMode): the cached animate() plans
+    /// that may have reached this object are rebuilt on their next use.
+    void referencesChanged() noexcept;
 
     friend class Group;
     friend class Node;
+    friend class detail::AnimationPlan;
 
 private:
     std::uint64_t objectId_;
@@ -136,6 +152,12 @@ private:
     std::any userObject_;
     // Held as Object3D so this header needs no AnimationTrack definition.
     std::vector<Ref<Object3D>> tracks_;  // sorted by target property
+    // What animate() called on this object reaches (created by the first
+    // call; not copied by duplicate()).
+    std::unique_ptr<detail::AnimationPlan> animationPlan_;
+    // Set once some animate() plan has reached this object: only then can a
+    // change of its references make a plan stale.
+    bool inAnimationPlan_ = false;
 };
 
 template <class Visit>

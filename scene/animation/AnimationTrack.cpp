@@ -62,6 +62,7 @@ AnimationTrack::~AnimationTrack() = default;
 Object3D* AnimationTrack::duplicateImpl(DuplicateMap&) const { return new AnimationTrack(*this); }
 
 void AnimationTrack::setController(AnimationController* controller) {
+    if (controller_.get() != controller) referencesChanged();
     controller_ = controller;
     touch();
 }

@@ -6,15 +6,16 @@
 #include <m3g/KeyframeSequence.h>
 
 #include "Check.h"
+#include "Slerp.h"
 
 namespace m3g::detail {
 
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kPi = 3.14159265358979323846;
 
-// ---- Quaternions (x, y, z, w), in double for the intermediate steps ----
+// ---- Quaternions (x, y, z, w): the SQUAD control points in double, once
+// per change of a sequence; samples in float (Slerp.h) ----
 
 struct Quat {
     double x, y, z, w;
@@ -63,28 +64,6 @@ Vec3 logDiff(const Quat& a, const Quat& b) { return logQuat(mul(conjugate(a), b)
 Vec3 add(const Vec3& a, const Vec3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 Vec3 sub(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 Vec3 scale(const Vec3& a, double s) { return {a.x * s, a.y * s, a.z * s}; }
-
-// Spherical interpolation along the arc from a to b as given: no sign flip
-// towards the shortest arc, as Nokia's M3G implementation (reference) does.
-Quat slerp(const Quat& a, const Quat& b, double u) {
-    const double c = dot(a, b);
-    if (c > 1.0 - 1e-9) {  // (nearly) the same rotation: normalised lerp
-        return normalized({a.x + u * (b.x - a.x), a.y + u * (b.y - a.y), a.z + u * (b.z - a.z),
-                           a.w + u * (b.w - a.w)});
-    }
-    if (c < -1.0 + 1e-9) {
-        // Exactly opposite: any great circle through a and -a will do; go
-        // through a quaternion perpendicular to a.
-        const Quat p{-a.y, a.x, -a.w, a.z};
-        const double ca = std::cos(u * kPi), sa = std::sin(u * kPi);
-        return normalized({ca * a.x + sa * p.x, ca * a.y + sa * p.y, ca * a.z + sa * p.z, ca * a.w + sa * p.w});
-    }
-    const double omega = std::acos(c);
-    const double so = std::sin(omega);
-    const double wa = std::sin((1.0 - u) * omega) / so;
-    const double wb = std::sin(u * omega) / so;
-    return normalized({wa * a.x + wb * b.x, wa * a.y + wb * b.y, wa * a.z + wb * b.z, wa * a.w + wb * b.w});
-}
 
 // ---- The valid keyframes, indexed 0..count-1 along the valid range ----
 
@@ -150,6 +129,19 @@ int segmentAt(const ValidKeys& keys, int n, double s, bool strict) {
     return lo;
 }
 
+/// segmentAt(keys, n, s, false), trying `guess` and the segment after it
+/// first. Valid keys are in non-decreasing time order, so a segment j with
+/// time(j) <= s < time(j + 1) (or j the last key and time(j) <= s) is the
+/// last key with time <= s: the binary search's answer.
+int segmentFrom(const ValidKeys& keys, int n, double s, int guess) {
+    const auto holds = [&](int j) { return keys.time(j) <= s && (j == n - 1 || keys.time(j + 1) > s); };
+    if (guess >= 0 && guess < n) {
+        if (holds(guess)) return guess;
+        if (guess + 1 < n && holds(guess + 1)) return guess + 1;
+    }
+    return segmentAt(keys, n, s, false);
+}
+
 void copyKey(const ValidKeys& keys, int j, int components, std::span<float> out) {
     const float* v = keys.value(j);
     std::copy(v, v + components, out.begin());
@@ -181,18 +173,34 @@ Quat squadB(const ValidKeys& keys, int j) {
     return mul(cur, expQuat(t));
 }
 
+Quatf toFloat(const Quat& q) { return {float(q.x), float(q.y), float(q.z), float(q.w)}; }
+
+Quatf quatfAt(const float* p) { return {p[0], p[1], p[2], p[3]}; }
+
 /// Control quaternion `which` (0: A, 1: B) of valid key j from a view's
 /// precomputed controls.
-Quat squadControl(const KeyframeView& k, int j, int which) {
-    const double* c = k.squad.data() + std::size_t(j) * 8 + std::size_t(which) * 4;
+Quatf squadControl(const KeyframeView& k, int j, int which) {
+    const float* c = k.squad.data() + std::size_t(j) * 8 + std::size_t(which) * 4;
     return {c[0], c[1], c[2], c[3]};
 }
 
-void writeQuat(const Quat& q, std::span<float> out) {
-    out[0] = float(q.x);
-    out[1] = float(q.y);
-    out[2] = float(q.z);
-    out[3] = float(q.w);
+Arc arcFrom(std::span<const float> arcs, int index) {
+    const float* a = arcs.data() + std::size_t(index) * kArcFloats;
+    return {{a[0], a[1], a[2], a[3]}, a[4], static_cast<Arc::Kind>(int(a[5]))};
+}
+
+void putArc(const Arc& arc, float* out) {
+    out[0] = arc.v.x, out[1] = arc.v.y, out[2] = arc.v.z, out[3] = arc.v.w;
+    out[4] = arc.half;
+    out[5] = float(int(arc.kind));
+    out[6] = out[7] = 0.0f;
+}
+
+void writeQuat(const Quatf& q, std::span<float> out) {
+    out[0] = q.x;
+    out[1] = q.y;
+    out[2] = q.z;
+    out[3] = q.w;
 }
 
 }  // namespace
@@ -217,18 +225,38 @@ std::string keyframeProblem(const KeyframeView& k) {
     return {};
 }
 
-void squadControls(const KeyframeView& k, std::vector<double>& out) {
+void squadControls(const KeyframeView& k, std::vector<float>& out) {
     const ValidKeys keys(k);
     out.resize(std::size_t(keys.count()) * 8);
     for (int j = 0; j < keys.count(); ++j) {
-        const Quat a = squadA(keys, j), b = squadB(keys, j);
-        double* c = out.data() + std::size_t(j) * 8;
+        const Quatf a = toFloat(squadA(keys, j)), b = toFloat(squadB(keys, j));
+        float* c = out.data() + std::size_t(j) * 8;
         c[0] = a.x, c[1] = a.y, c[2] = a.z, c[3] = a.w;
         c[4] = b.x, c[5] = b.y, c[6] = b.z, c[7] = b.w;
     }
 }
 
-SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<float> out) {
+void keyframeArcs(const KeyframeView& k, std::vector<float>& out) {
+    out.clear();
+    const bool squad = k.interpolation == KeyframeSequence::SQUAD;
+    if (!squad && k.interpolation != KeyframeSequence::SLERP) return;
+    const ValidKeys keys(k);
+    const int perKey = squad ? 2 : 1;
+    out.resize(std::size_t(keys.count()) * perKey * kArcFloats);
+    for (int j = 0; j < keys.count(); ++j) {
+        const int j1 = keys.next(j);
+        float* dst = out.data() + std::size_t(j) * perKey * kArcFloats;
+        putArc(arcOf(quatfAt(keys.value(j)), quatfAt(keys.value(j1))), dst);
+        if (squad) {
+            const bool cached = !k.squad.empty();
+            const Quatf a = cached ? squadControl(k, j, 0) : toFloat(squadA(keys, j));
+            const Quatf b = cached ? squadControl(k, j1, 1) : toFloat(squadB(keys, j1));
+            putArc(arcOf(a, b), dst + kArcFloats);
+        }
+    }
+}
+
+SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<float> out, int* segment) {
     const ValidKeys keys(k);
     const int n = keys.count();
     const int comps = k.components;
@@ -254,7 +282,8 @@ SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<flo
 
     // The last key with time <= s starts the segment (for CONSTANT that is
     // never the last key; for LOOP the last key starts the wrap segment).
-    const int j = segmentAt(keys, n, s, false);
+    const int j = segment ? segmentFrom(keys, n, s, *segment) : segmentAt(keys, n, s, false);
+    if (segment) *segment = j;
     const int j1 = keys.next(j);
     const double t0 = keys.time(j);
     const double delta = keys.delta(j);
@@ -276,24 +305,45 @@ SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<flo
         for (int c = 0; c < comps; ++c) out[c] = float((1.0 - u) * p0[c] + u * p1[c]);
         break;
     case KeyframeSequence::SLERP:
-        writeQuat(slerp(quatAt(p0), quatAt(p1), u), out);
+        writeQuat(k.arcs.empty() ? slerp(quatfAt(p0), quatfAt(p1), float(u))
+                                 : arcAt(quatfAt(p0), arcFrom(k.arcs, j), float(u)),
+                  out);
         break;
     case KeyframeSequence::SPLINE: {
         const double u2 = u * u, u3 = u2 * u;
         const double h00 = 2 * u3 - 3 * u2 + 1, h01 = -2 * u3 + 3 * u2;
         const double h10 = u3 - 2 * u2 + u, h11 = u3 - u2;
-        const double sOut = keys.outScale(j), sIn = keys.inScale(j1);
-        for (int c = 0; c < comps; ++c)
-            out[c] = float(h00 * p0[c] + h01 * p1[c] + h10 * tangent(keys, j, c, sOut) +
-                           h11 * tangent(keys, j1, c, sIn));
+        // tangent(keys, j, c, sOut) and tangent(keys, j1, c, sIn) with the
+        // neighbours' rows found once (next(j) is j1, prev(j1) is j) rather
+        // than per component, where every store to `out` (which may alias
+        // the key values, as far as the compiler knows) made it find them
+        // again. The same operations in the same order: the same bits.
+        const double sOut = keys.outScale(j) * 0.5, sIn = keys.inScale(j1) * 0.5;
+        const float* before = keys.value(keys.prev(j));
+        const float* after = keys.value(keys.next(j1));
+        for (int c = 0; c < comps; ++c) {
+            const double t0 = sOut * (double(p1[c]) - double(before[c]));
+            const double t1 = sIn * (double(after[c]) - double(p0[c]));
+            out[c] = float(h00 * p0[c] + h01 * p1[c] + h10 * t0 + h11 * t1);
+        }
         break;
     }
     case KeyframeSequence::SQUAD: {
-        const Quat q0 = quatAt(p0), q1 = quatAt(p1);
+        // slerp(slerp(q0, q1, u), slerp(A_j, B_j1, u), 2u(1 - u)), the two
+        // inner arcs from the view when it has them.
         const bool cached = !k.squad.empty();
-        const Quat a = cached ? squadControl(k, j, 0) : squadA(keys, j);
-        const Quat b = cached ? squadControl(k, j1, 1) : squadB(keys, j1);
-        writeQuat(slerp(slerp(q0, q1, u), slerp(a, b, u), 2.0 * u * (1.0 - u)), out);
+        const Quatf a = cached ? squadControl(k, j, 0) : toFloat(squadA(keys, j));
+        const float uf = float(u);
+        Quatf keyPoint, controlPoint;
+        if (!k.arcs.empty()) {
+            keyPoint = arcAt(quatfAt(p0), arcFrom(k.arcs, 2 * j), uf);
+            controlPoint = arcAt(a, arcFrom(k.arcs, 2 * j + 1), uf);
+        } else {
+            const Quatf b = cached ? squadControl(k, j1, 1) : toFloat(squadB(keys, j1));
+            keyPoint = slerp(quatfAt(p0), quatfAt(p1), uf);
+            controlPoint = slerp(a, b, uf);
+        }
+        writeQuat(slerp(keyPoint, controlPoint, 2.0f * uf * (1.0f - uf)), out);
         break;
     }
     default:

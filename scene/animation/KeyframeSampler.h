@@ -24,10 +24,19 @@ struct KeyframeView {
     std::span<const int> times;     // keyCount entries
     std::span<const float> values;  // keyCount * components entries
     /// SQUAD: the control quaternions A_j, B_j of each valid key j (8
-    /// doubles per key, x y z w each, in valid-range order) as
+    /// floats per key, x y z w each, in valid-range order) as
     /// squadControls() computes them; empty: computed per sample.
-    std::span<const double> squad = {};
+    std::span<const float> squad = {};
+    /// SLERP and SQUAD: the part of each segment's SLERPs that does not
+    /// depend on the time (keyframeArcs: kArcFloats floats per arc, one arc
+    /// per valid key for SLERP, two for SQUAD), as
+    /// KeyframeSequence::quaternionArcs() computes them; empty: computed per
+    /// sample, with the same result.
+    std::span<const float> arcs = {};
 };
+
+/// Floats per arc in KeyframeView::arcs.
+inline constexpr int kArcFloats = 8;
 
 /// View of a sequence (no copy; valid while the sequence is unchanged).
 KeyframeView viewOf(const KeyframeSequence& sequence) noexcept;
@@ -46,14 +55,34 @@ struct SampleValidity {
 };
 
 /// The SQUAD control quaternions of every valid key of a valid SQUAD view,
-/// into `out` (8 doubles per key): what sampleKeyframes would compute for
+/// into `out` (8 floats per key): what sampleKeyframes would compute for
 /// each segment, once per change of the sequence instead of per sample.
-void squadControls(const KeyframeView& k, std::vector<double>& out);
+/// Computed in double (logarithms and exponentials of quaternions), rounded
+/// to float once.
+void squadControls(const KeyframeView& k, std::vector<float>& out);
+
+/// The arcs of every valid key of a valid SLERP or SQUAD view into `out`
+/// (KeyframeView::arcs; nothing for other interpolations): for SLERP the arc
+/// of the segment from key j to the next; for SQUAD that one, then the arc
+/// from the control quaternion A_j to B of the next key (from k.squad, or
+/// computed as squadControls would). Once per change of the sequence
+/// instead of per sample: a sample then needs only a sine and a cosine per
+/// SLERP it takes from here (two of the three of a SQUAD sample).
+void keyframeArcs(const KeyframeView& k, std::vector<float>& out);
 
 /// Samples a valid view (see keyframeProblem) at sequence time `time` into
 /// `out` (at least k.components floats). Quaternion results (SLERP, SQUAD)
-/// are unit length; SLERP does not flip to the shortest arc (Nokia).
-SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<float> out);
+/// are unit length, interpolated in float (Slerp.h); SLERP does not flip to
+/// the shortest arc (Nokia).
+///
+/// `segment`, if not null, is a guess at the segment holding `time` (an
+/// index along the valid range, as left there by the previous call) and
+/// receives the segment used. The guess and the one after it are tried
+/// before a binary search, so a caller whose time moves forward a little per
+/// call (animate() once per frame) finds its segment in one or two
+/// comparisons. Any value is safe: a wrong or stale guess (the sequence
+/// changed) only costs the search, and the result is the same as without it.
+SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<float> out, int* segment = nullptr);
 
 /// The derivative of the sampled value with respect to sequence time at
 /// `time` (k.components floats into `out`) for a valid SPLINE or LINEAR

@@ -41,7 +41,7 @@ Object3D* KeyframeSequence::duplicateImpl(DuplicateMap&) const { return new Keyf
 
 void KeyframeSequence::changed() noexcept {
     validated_ = false;
-    squadReady_ = false;
+    quaternionsReady_ = false;
     touch();
 }
 
@@ -101,13 +101,26 @@ void KeyframeSequence::setRepeatMode(int mode) {
     changed();
 }
 
-std::span<const double> KeyframeSequence::squadControls() const {
-    if (!squadReady_) {
-        squad_.clear();
-        if (interpolation_ == SQUAD) detail::squadControls(detail::viewOf(*this), squad_);
-        squadReady_ = true;
+void KeyframeSequence::prepareQuaternions() const {
+    squad_.clear();
+    arcs_.clear();
+    detail::KeyframeView view = detail::viewOf(*this);
+    if (interpolation_ == SQUAD) {
+        detail::squadControls(view, squad_);
+        view.squad = squad_;
     }
+    detail::keyframeArcs(view, arcs_);
+    quaternionsReady_ = true;
+}
+
+std::span<const float> KeyframeSequence::squadControls() const {
+    if (!quaternionsReady_) prepareQuaternions();
     return squad_;
+}
+
+std::span<const float> KeyframeSequence::quaternionArcs() const {
+    if (!quaternionsReady_) prepareQuaternions();
+    return arcs_;
 }
 
 void KeyframeSequence::validate() const {

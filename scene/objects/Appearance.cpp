@@ -35,6 +35,7 @@ void Appearance::setCompositingMode(CompositingMode* compositingMode) {
 Ref<CompositingMode> Appearance::getCompositingMode() const { return compositingMode_; }
 
 void Appearance::setFog(Fog* fog) {
+    if (fog_.get() != fog) referencesChanged();
     fog_ = fog;
     touch();
 }
@@ -49,6 +50,7 @@ void Appearance::setPolygonMode(PolygonMode* polygonMode) {
 Ref<PolygonMode> Appearance::getPolygonMode() const { return polygonMode_; }
 
 void Appearance::setMaterial(Material* material) {
+    if (material_.get() != material) referencesChanged();
     material_ = material;
     touch();
 }
@@ -57,6 +59,7 @@ Ref<Material> Appearance::getMaterial() const { return material_; }
 
 void Appearance::setTexture(int index, Texture2D* texture) {
     detail::requireIndex(index, getLimits().numTextureUnits, "Appearance::setTexture", "index");
+    if (textures_[static_cast<std::size_t>(index)].get() != texture) referencesChanged();
     textures_[static_cast<std::size_t>(index)] = texture;
     touch();
 }

@@ -30,6 +30,7 @@ void Group::addChild(Node* child) {
         throw IllegalArgumentException("Group::addChild: the child is an ancestor of this group (would form a cycle)");
     children_.emplace_back(child);
     child->setParent(this);
+    referencesChanged();
     touch();
 }
 
@@ -62,6 +63,7 @@ void Group::removeChild(Node* child) {
     Ref<Node> keep = *it;  // keep alive until the parent pointer is cleared
     children_.erase(it);
     child->setParent(nullptr);
+    referencesChanged();
     touch();
 }
 

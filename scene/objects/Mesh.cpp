@@ -39,6 +39,7 @@ Object3D* Mesh::duplicateImpl(DuplicateMap&) const { return new Mesh(*this); }
 
 void Mesh::setAppearance(int index, Appearance* appearance) {
     detail::requireIndex(index, getSubmeshCount(), "Mesh::setAppearance", "index");
+    if (appearances_[index].get() != appearance) referencesChanged();
     appearances_[index] = appearance;
     touch();
 }

@@ -3,6 +3,7 @@
 #include <atomic>
 #include <memory>
 
+#include "AnimationPlan.h"
 #include "Check.h"
 
 namespace m3g {
@@ -24,6 +25,10 @@ Object3D::Object3D(const Object3D& other)
       tracks_(other.tracks_) {}
 
 Object3D::~Object3D() = default;
+
+void Object3D::referencesChanged() noexcept {
+    if (inAnimationPlan_) detail::AnimationPlan::invalidateAll();
+}
 
 void Object3D::collectReferences(std::vector<Object3D*>&) const {}
 

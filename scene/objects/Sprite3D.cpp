@@ -29,6 +29,7 @@ Sprite3D::~Sprite3D() = default;
 Object3D* Sprite3D::duplicateImpl(DuplicateMap&) const { return new Sprite3D(*this); }
 
 void Sprite3D::setAppearance(Appearance* appearance) {
+    if (appearance_.get() != appearance) referencesChanged();
     appearance_ = appearance;
     touch();
 }

@@ -13,6 +13,7 @@ World::World(const World& other) : Group(other), activeCamera_(other.activeCamer
 
 void World::setActiveCamera(Camera* camera) {
     detail::requireNonNull(camera, "World::setActiveCamera", "camera");
+    if (activeCamera_.get() != camera) referencesChanged();
     activeCamera_ = camera;
     touch();
 }
@@ -20,6 +21,7 @@ void World::setActiveCamera(Camera* camera) {
 Ref<Camera> World::getActiveCamera() const noexcept { return activeCamera_; }
 
 void World::setBackground(Background* background) noexcept {
+    if (background_.get() != background) referencesChanged();
     background_ = background;
     touch();
 }

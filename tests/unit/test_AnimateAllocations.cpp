@@ -4,10 +4,12 @@
 // every kind of animated object are checked to allocate nothing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <cstdlib>
 #include <new>
+#include <string>
 #include <vector>
 
 #include <m3g/m3g.h>
@@ -177,4 +179,39 @@ TEST(AnimateAllocations, SubtreeAndOtherGraphsStayAllocationFree) {
         child->animate(t);
     }
     EXPECT_EQ(gAllocations.load() - before, 0);
+}
+
+TEST(AnimateAllocations, SkinnedCorpusFramesDoNotAllocate) {
+    // The skinned corpus files of BM_SkinnedCorpusFrame, animated over their
+    // whole longest sequence in the benchmark's steps after two warm-up
+    // frames (the first builds the animation plan).
+    const char* const files[] = {
+        "bryan10328__java-m3g/res/mahosyojo-with-sexy-walking.m3g",
+        "BaalNetbek__M3G-Viewer/com.wizzer.m3g.toolkit/test/robot.m3g",
+        "vadosnaprimer__desktop-m3g/sample/sample-12-loader/test.m3g",
+        "jacques-gasselin__m3x/tools/test/data/otokka_jump2.m3g",
+    };
+    int tested = 0;
+    for (const char* name : files) {
+        const std::string path = std::string(M3G_CORPUS_DIR) + "/models/" + name;
+        LoadResult r;
+        try {
+            r = Loader::loadDetailed(path);
+        } catch (const IOException&) {
+            continue;  // corpus not present
+        }
+        int period = 1;
+        for (const auto& o : r.objects)
+            if (auto* k = dynamic_cast<KeyframeSequence*>(o.get())) period = std::max(period, k->getDuration());
+        for (const auto& root : r.roots) {
+            root->animate(0);
+            root->animate(33);
+        }
+        const long long before = gAllocations.load();
+        for (int t = 66; t < period + 66; t += 33)
+            for (const auto& root : r.roots) root->animate(t % period);
+        EXPECT_EQ(gAllocations.load() - before, 0) << name;
+        ++tested;
+    }
+    if (tested == 0) GTEST_SKIP() << "no skinned corpus file under " << M3G_CORPUS_DIR;
 }

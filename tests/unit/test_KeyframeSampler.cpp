@@ -303,9 +303,10 @@ TEST(KeyframeSampler, SquadLoopFourKeysNonConstantRate) {
     expectQuat(sampleN(*s, 40), zQuat(0));
 }
 
-// SQUAD control quaternions computed once per change of the sequence
-// (KeyframeSequence::squadControls, as animate() samples) give the same
-// bits as computing them per sample; every kind of change refreshes them.
+// SQUAD control quaternions and arcs computed once per change of the sequence
+// (KeyframeSequence::squadControls and quaternionArcs, as animate() samples)
+// give the same bits as computing them per sample; every kind of change
+// refreshes them.
 TEST(KeyframeSampler, SquadControlsCachedGiveTheSameBitsAndFollowChanges) {
     auto s = makeSeq(KeyframeSequence::SQUAD, KeyframeSequence::LOOP, 100,
                      {{0, {0, 0, 0, 1}},
@@ -319,11 +320,18 @@ TEST(KeyframeSampler, SquadControlsCachedGiveTheSameBitsAndFollowChanges) {
         detail::KeyframeView cached = perSample;
         cached.squad = s->squadControls();
         ASSERT_FALSE(cached.squad.empty()) << what;
+        detail::KeyframeView withArcs = cached;  // as animate() samples
+        withArcs.arcs = s->quaternionArcs();
+        ASSERT_FALSE(withArcs.arcs.empty()) << what;
         for (double t = -30.0; t <= 230.0; t += 1.7) {
-            float a[4], b[4];
+            float a[4], b[4], c[4];
             detail::sampleKeyframes(perSample, t, a);
             detail::sampleKeyframes(cached, t, b);
-            for (int c = 0; c < 4; ++c) ASSERT_EQ(a[c], b[c]) << what << ", time " << t << ", component " << c;
+            detail::sampleKeyframes(withArcs, t, c);
+            for (int i = 0; i < 4; ++i) {
+                ASSERT_EQ(a[i], b[i]) << what << ", time " << t << ", component " << i;
+                ASSERT_EQ(a[i], c[i]) << what << ", arcs, time " << t << ", component " << i;
+            }
         }
     };
     expectSameBits("loop");
@@ -346,4 +354,82 @@ TEST(KeyframeSampler, SquadControlsCachedGiveTheSameBitsAndFollowChanges) {
     expectSameBits("after setDuration");
     auto linear = makeSeq(KeyframeSequence::LINEAR, KeyframeSequence::LOOP, 10, {{0, {1}}, {5, {2}}});
     EXPECT_TRUE(linear->squadControls().empty());
+    EXPECT_TRUE(linear->quaternionArcs().empty());
+}
+
+// A segment guess (what animate() passes: the last sample's segment) never
+// changes the result: right, stale, out-of-range and negative guesses give
+// the same bits and validity as no guess, and the segment handed back is
+// the one the binary search finds. Coincident key times, a wrapping valid
+// range and both repeat modes included.
+TEST(KeyframeSampler, SegmentGuessGivesTheSameResultAsTheSearch) {
+    auto s = makeSeq(KeyframeSequence::SQUAD, KeyframeSequence::LOOP, 100,
+                     {{0, {0, 0, 0, 1}},
+                      {15, {0.3f, 0.1f, 0, 0.9f}},
+                      {15, {0, 0.7f, 0.2f, 0.6f}},
+                      {70, {-0.5f, 0, 0.5f, 0.5f}},
+                      {90, {0.1f, -0.2f, 0.9f, 0.3f}}});
+    auto l = makeSeq(KeyframeSequence::LINEAR, KeyframeSequence::CONSTANT, 60,
+                     {{5, {1}}, {10, {2}}, {10, {3}}, {30, {4}}, {31, {5}}, {50, {6}}});
+    auto compare = [](const KeyframeSequence& seq, const char* what) {
+        seq.validate();
+        detail::KeyframeView view = detail::viewOf(seq);
+        view.squad = seq.squadControls();
+        int carried = 0;  // as animate() carries it from sample to sample
+        for (double t = -130.0; t <= 260.0; t += 0.75) {
+            std::vector<float> plain(4), guessed(4), carriedOut(4);
+            const auto v0 = detail::sampleKeyframes(view, t, plain);
+            for (int guess : {-3, 0, 1, 2, 3, 4, 5, 6, 99}) {
+                int g = guess;
+                const auto v1 = detail::sampleKeyframes(view, t, guessed, &g);
+                ASSERT_EQ(plain, guessed) << what << ", time " << t << ", guess " << guess;
+                ASSERT_EQ(v0.forward, v1.forward);
+                ASSERT_EQ(v0.backward, v1.backward);
+            }
+            detail::sampleKeyframes(view, t, carriedOut, &carried);
+            ASSERT_EQ(plain, carriedOut) << what << ", time " << t;
+        }
+    };
+    compare(*s, "squad loop");
+    compare(*l, "linear constant");
+    s->setValidRange(3, 1);  // keys 3, 4, 0, 1: times 70, 90, 0, 15 do not rise: fix them
+    const float k3[4] = {-0.5f, 0, 0.5f, 0.5f}, k4[4] = {0.1f, -0.2f, 0.9f, 0.3f};
+    const float k0[4] = {0, 0, 0, 1}, k1[4] = {0.3f, 0.1f, 0, 0.9f};
+    s->setKeyframe(3, 0, k3);
+    s->setKeyframe(4, 10, k4);
+    s->setKeyframe(0, 20, k0);
+    s->setKeyframe(1, 50, k1);
+    compare(*s, "wrapping valid range");
+    s->setRepeatMode(KeyframeSequence::CONSTANT);
+    compare(*s, "wrapping valid range, constant");
+}
+
+// The same for SLERP: arcs kept per segment, nearly equal and exactly
+// opposite neighbours (the two special arcs) included.
+TEST(KeyframeSampler, SlerpArcsCachedGiveTheSameBitsAndFollowChanges) {
+    auto s = makeSeq(KeyframeSequence::SLERP, KeyframeSequence::LOOP, 100,
+                     {{0, {0, 0, 0, 1}},
+                      {15, {0, 0, 0, -1}},
+                      {40, {0, 0.7f, 0.2f, 0.6f}},
+                      {70, {0, 0.7f, 0.2f, 0.6f}},
+                      {90, {-0.5f, 0, 0.5f, 0.5f}}});
+    auto expectSameBits = [&](const char* what) {
+        s->validate();
+        const detail::KeyframeView perSample = detail::viewOf(*s);
+        detail::KeyframeView cached = perSample;
+        cached.arcs = s->quaternionArcs();
+        ASSERT_FALSE(cached.arcs.empty()) << what;
+        for (double t = -30.0; t <= 230.0; t += 1.3) {
+            float a[4], b[4];
+            detail::sampleKeyframes(perSample, t, a);
+            detail::sampleKeyframes(cached, t, b);
+            for (int c = 0; c < 4; ++c) ASSERT_EQ(a[c], b[c]) << what << ", time " << t << ", component " << c;
+        }
+    };
+    expectSameBits("loop");
+    const float q[4] = {0.6f, 0, 0, -0.8f};
+    s->setKeyframe(3, 75, q);
+    expectSameBits("after setKeyframe");
+    s->setValidRange(1, 3);
+    expectSameBits("after setValidRange");
 }
