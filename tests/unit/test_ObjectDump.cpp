@@ -701,8 +701,8 @@ TEST(ObjectDump, JsonStartsWithTheLoadsHeaderReferencesAndWarnings) {
     options.load = &load;
     Object3D* roots[] = {group.get()};
     const json doc = json::parse(dumpJson(roots, options));
-    auto it = doc.begin();
-    EXPECT_EQ(it.key(), "file");
+    // First in the document, before the objects (member order kept).
+    EXPECT_EQ(nlohmann::ordered_json::parse(dumpJson(roots, options)).begin().key(), "file");
     EXPECT_EQ(doc["file"]["version"], "1.0");
     EXPECT_EQ(doc["file"]["authoringField"], "hand made");
     EXPECT_EQ(doc["file"]["totalFileSize"], 123);
