@@ -184,8 +184,14 @@ TEST(ViewerEdit, ASavedSceneReloadsWithTheEditsAndWithoutTheViewersNodes) {
         Object3D* root = sample.get();
         Saver::save(original, std::span<Object3D* const>(&root, 1));
     }
+    std::size_t objectCount = 0;  // the file's, before the viewer adds its camera and light
+    {
+        const std::vector<Ref<Object3D>> loaded = Loader::load(original);
+        std::vector<Object3D*> roots;
+        for (const auto& o : loaded) roots.push_back(o.get());
+        objectCount = m3gcli::collectObjects(roots).size();
+    }
     ViewerScene scene(original, 320, 240, false);
-    const std::size_t objectCount = m3gcli::collectObjects(scene.roots()).size();
     // The first Material (by `m3g info` id) and a node.
     Material* material = nullptr;
     Node* node = nullptr;

@@ -87,13 +87,13 @@ echo "== a numbered screenshot is the view rectangle's image"
 echo "== the saved file reloads with the same objects and the edited values"
 "$m3g" info --json "$work/edited.m3g" > "$work/edited.json"
 count() { sed -n 's/^  "objectCount": \([0-9]*\).*/\1/p' "$1"; }
-[ -n "$(count "$work/sample.json")" ] || fail "no objectCount in m3g info --json"
-[ -n "$(field "$work/sample.json" "$mat" shininess)" ] || fail "no shininess of #$mat in m3g info --json"
 [ "$(count "$work/sample.json")" = "$(count "$work/edited.json")" ] ||
   fail "object count $(count "$work/sample.json") -> $(count "$work/edited.json")"
 field() {  # field FILE ID NAME: the value of NAME in object ID
   awk -v id="$2" -v name="\"$3\":" '/^      "id": /{cur=$2; sub(",", "", cur)} cur==id && $1==name {v=$2; sub(",", "", v); print v; exit}' "$1"
 }
+[ -n "$(count "$work/sample.json")" ] || fail "no objectCount in m3g info --json"
+[ -n "$(field "$work/sample.json" "$mat" shininess)" ] || fail "no shininess of #$mat in m3g info --json"
 [ "$(field "$work/edited.json" "$mat" diffuseColor)" = '"0xFFFF0000"' ] || fail "diffuse is $(field "$work/edited.json" "$mat" diffuseColor)"
 [ "$(field "$work/edited.json" "$mat" shininess)" = "$(field "$work/sample.json" "$mat" shininess)" ] || fail "the undone shininess was saved"
 [ "$(field "$work/edited.json" "$mat" emissiveColor)" = "$(field "$work/sample.json" "$mat" emissiveColor)" ] || fail "the undone emissive was saved"
