@@ -60,7 +60,7 @@ std::vector<EditProperty> makeProperties() {
                      return v;
                  },
                  [](Object3D& o, const std::vector<float>& v, int) { as<Transformable>(o).setTranslation(v[0], v[1], v[2]); }});
-    p.push_back({"orientation", "orientation (angle, axis)", EditKind::AngleAxis, 4, is<Transformable>,
+    p.push_back({"orientation", "orientation", EditKind::AngleAxis, 4, is<Transformable>,
                  [](const Object3D& o) {
                      std::vector<float> v(4);
                      as<Transformable>(o).getOrientation(v);
@@ -100,7 +100,7 @@ std::vector<EditProperty> makeProperties() {
     p.push_back({"weight", "weight", EditKind::Float, 1, is<AnimationController>,
                  [](const Object3D& o) { return std::vector<float>{as<AnimationController>(o).getWeight()}; },
                  [](Object3D& o, const std::vector<float>& v, int) { as<AnimationController>(o).setWeight(v[0]); }});
-    p.push_back({"interval", "active interval (start, end ms)", EditKind::Int2, 2, is<AnimationController>,
+    p.push_back({"interval", "active interval", EditKind::Int2, 2, is<AnimationController>,
                  [](const Object3D& o) {
                      const auto& c = as<AnimationController>(o);
                      return std::vector<float>{static_cast<float>(c.getActiveIntervalStart()),

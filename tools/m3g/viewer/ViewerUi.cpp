@@ -140,6 +140,8 @@ void editor(ViewerState& state, Object3D& o, const EditProperty& p) {
             return;
         }
     }
+    if (p.kind == EditKind::AngleAxis && ImGui::IsItemHovered()) ImGui::SetTooltip("angle (degrees), axis x y z");
+    if (p.kind == EditKind::Int2 && ImGui::IsItemHovered()) ImGui::SetTooltip("start, end (world time, ms)");
     if (!changed) return;
     if (pending.property != &p || pending.target.get() != &o) {
         commitPending(state);
