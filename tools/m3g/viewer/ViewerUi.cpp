@@ -84,11 +84,16 @@ struct PendingEdit {
     const EditProperty* property = nullptr;
     std::vector<float> before;
     int worldTime = 0;
+    const ViewerScene* scene = nullptr;  ///< the scene it was made in
 };
 PendingEdit pending;
 
 void commitPending(ViewerState& state) {
     if (!pending.property) return;
+    if (pending.scene != state.scene.get()) {  // another file was opened meanwhile: its stack is not for this
+        pending = {};
+        return;
+    }
     Edit e;
     e.target = pending.target;
     e.property = pending.property;
@@ -145,7 +150,7 @@ void editor(ViewerState& state, Object3D& o, const EditProperty& p) {
     if (!changed) return;
     if (pending.property != &p || pending.target.get() != &o) {
         commitPending(state);
-        pending = {Ref<Object3D>(&o), &p, before, static_cast<int>(state.timeMs)};
+        pending = {Ref<Object3D>(&o), &p, before, static_cast<int>(state.timeMs), state.scene.get()};
     }
     try {
         p.set(o, v, pending.worldTime);
