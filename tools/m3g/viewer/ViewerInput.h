@@ -22,17 +22,26 @@ public:
     /// A file dropped on the window since the last call.
     std::optional<std::string> takeDrop();
 
-    // Actions (from the window or a script); sizes are the view's pixels.
-    void drag(bool pan, float dx, float dy, int width, int height);
-    void scroll(float steps, int width, int height);
-    void click(float x, float y, int width, int height);
-    /// A shortcut by name (space r w l h f1 left right 0..9); false if unknown.
-    bool key(const std::string& name, int width, int height);
+    // Actions (from the window or a script). Positions are window pixels,
+    // mapped into the 3D view's rectangle (state.layout.view).
+    void drag(bool pan, float dx, float dy);
+    void scroll(float steps);
+    void click(float x, float y);
+    /// A shortcut by name (space r s w l h f1 left right 0..9, ctrl+z,
+    /// ctrl+y, ctrl+shift+z, ctrl+s); false if unknown.
+    bool key(const std::string& name);
+
+    // Edits (the status line says what happened; false on failure).
+    bool undo();
+    bool redo();
+    /// Saves the scene to `path` (state.savePath when empty).
+    bool save(const std::string& path);
 
     /// Runs one script command; `frame` renders a frame, `screenshot` one
-    /// to a file. Returns 0, or 1 after printing why the script failed.
+    /// to a file ("" : the next numbered name). Returns 0, or 1 after
+    /// printing why the script failed.
     int apply(const ScriptCommand& c, const std::function<void()>& frame,
-              const std::function<void(const std::string&, bool withUi)>& screenshot, int width, int height);
+              const std::function<void(const std::string&, bool withUi)>& screenshot);
 
 private:
     ViewerState& state_;
@@ -43,6 +52,11 @@ private:
 
     friend struct InputCallbacks;
 };
+
+/// Recomputes state.layout from the framebuffer size, the panels' switch
+/// and the splitter sizes; when the 3D view's size changed, the orbit
+/// camera's aspect follows it.
+void updateLayout(ViewerState& state);
 
 /// Opens a file for the viewer: a .m3g or .png gives a scene; a .jar lists
 /// its .m3g entries in `state` and gives null; "game.jar!path/x.m3g" opens

@@ -80,6 +80,14 @@ void ViewerScene::setup(int width, int height) {
     numbering_ = std::make_unique<m3gcli::ObjectNumbering>(fileRoots);
     const bool image = loaded_.versionMajor == 0 && !loaded_.objects.empty() &&
                        dynamic_cast<Image2D*>(loaded_.objects.front().get()) != nullptr;
+    for (const auto& o : loaded_.objects)
+        if (auto* world = dynamic_cast<World*>(o.get())) {
+            fileWorld_ = Ref<World>(world);
+            for (int i = 0; i < world->getChildCount(); ++i) fileWorldChildren_.emplace_back(world->getChild(i));
+            fileActiveCamera_ = world->getActiveCamera();
+            fileBackground_ = world->getBackground();
+            break;
+        }
     prepared_ = image ? imageScene(loaded_) : m3gcli::prepareScene(loaded_, width, height);
     World& w = *prepared_.world;
     countMeshes(w, stats_);
@@ -158,5 +166,53 @@ void ViewerScene::followCamera() {
 }
 
 void ViewerScene::animate(int timeMs) { prepared_.world->animate(timeMs); }
+
+Object3D* ViewerScene::object(int id) const {
+    for (const auto& o : loaded_.objects)
+        if (numbering_->id(o.get()) == id) return o.get();
+    // Objects the file reaches but does not list as loaded (none today): by the numbering too.
+    for (Object3D* o : m3gcli::collectObjects(roots()))
+        if (numbering_->id(o) == id) return o;
+    return nullptr;
+}
+
+void ViewerScene::save(const std::string& path) {
+    // Take the viewer's additions out of the file's World for the save, and put them back after.
+    struct Removed {
+        Ref<Node> node;
+        int index;
+    };
+    std::vector<Removed> removed;
+    Ref<Camera> active;
+    Ref<Background> background;
+    World* w = fileWorld_.get();
+    if (w) {
+        active = w->getActiveCamera();
+        background = w->getBackground();
+        for (int i = w->getChildCount() - 1; i >= 0; --i) {
+            Ref<Node> child(w->getChild(i));
+            if (std::find(fileWorldChildren_.begin(), fileWorldChildren_.end(), child) == fileWorldChildren_.end()) {
+                removed.push_back({child, i});
+                w->removeChild(child.get());
+            }
+        }
+        w->setActiveCamera(fileActiveCamera_.get());
+        w->setBackground(fileBackground_.get());
+    }
+    auto restore = [&] {
+        if (!w) return;
+        for (auto it = removed.rbegin(); it != removed.rend(); ++it) w->addChild(it->node.get());
+        w->setActiveCamera(active.get());
+        w->setBackground(background.get());
+    };
+    try {
+        const std::vector<Object3D*> r = roots();
+        Saver::save(path, std::span<Object3D* const>(r.data(), r.size()));
+    } catch (...) {
+        restore();
+        throw;
+    }
+    restore();
+}
 
 }  // namespace m3gview

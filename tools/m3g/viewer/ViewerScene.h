@@ -77,6 +77,17 @@ public:
     /// Animates the World to `timeMs`.
     void animate(int timeMs);
 
+    /// The file's object with `m3g info` id `id`, or null.
+    m3g::Object3D* object(int id) const;
+    /// Writes the file's objects (its roots and all they reach) as .m3g
+    /// with m3g::Saver, as they are now (edits included). What the viewer
+    /// added is left out: its orbit camera and headlight, and what the
+    /// scene set-up added to a World of the file (auto-framing camera,
+    /// lights, background, a camera moved into it); the World's active
+    /// camera and background are the file's while saving. Throws what the
+    /// Saver throws.
+    void save(const std::string& path);
+
 private:
     void setup(int width, int height);
 
@@ -97,6 +108,11 @@ private:
     bool autoCamera_ = false;  // cameras_[0] is the auto-framing camera, not the file's
     std::string cameraError_;
     OrbitCamera orbit_;
+    // The file's first World as loaded (before the set-up added to it).
+    m3g::Ref<m3g::World> fileWorld_;
+    std::vector<m3g::Ref<m3g::Node>> fileWorldChildren_;
+    m3g::Ref<m3g::Camera> fileActiveCamera_;
+    m3g::Ref<m3g::Background> fileBackground_;
 };
 
 }  // namespace m3gview

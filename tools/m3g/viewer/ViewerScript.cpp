@@ -9,11 +9,20 @@ namespace m3gview {
 
 namespace {
 
-// Argument count of each command (-1: one or more... none here).
-const std::map<std::string, std::size_t>& arity() {
-    static const std::map<std::string, std::size_t> a{
-        {"frames", 1}, {"time", 1},  {"play", 0},   {"pause", 0},  {"drag", 5},       {"scroll", 1},
-        {"click", 2},  {"key", 1},   {"camera", 1}, {"screenshot", 1}, {"screenshot-ui", 1}, {"expect-pick", 1}, {"quit", 0}};
+// Argument counts of each command: {least, most} (kMany: no limit).
+constexpr std::size_t kMany = 64;
+struct Arity {
+    std::size_t least, most;
+};
+const std::map<std::string, Arity>& arity() {
+    static const std::map<std::string, Arity> a{
+        {"frames", {1, 1}},     {"time", {1, 1}},          {"play", {0, 0}},       {"pause", {0, 0}},
+        {"drag", {5, 5}},       {"scroll", {1, 1}},        {"click", {2, 2}},      {"key", {1, 1}},
+        {"camera", {1, 1}},     {"screenshot", {0, 1}},    {"screenshot-ui", {1, 1}}, {"expect-pick", {1, 1}},
+        {"quit", {0, 0}},       {"select", {1, 1}},        {"edit", {3, kMany}},   {"expect", {3, kMany}},
+        {"undo", {0, 0}},       {"redo", {0, 0}},          {"save", {1, 1}},       {"panels", {1, 1}},
+        {"layout", {0, 0}},     {"expect-view", {4, 4}},   {"splitter", {2, 2}},
+        {"expect-pixel", {4, 4}}};
     return a;
 }
 
@@ -33,9 +42,14 @@ Script Script::parse(const std::string& text, const std::string& name) {
         const auto it = arity().find(c.name);
         if (it == arity().end())
             throw std::runtime_error(name + ":" + std::to_string(number) + ": unknown command '" + c.name + "'");
-        if (it->second != c.args.size())
-            throw std::runtime_error(name + ":" + std::to_string(number) + ": '" + c.name + "' takes " +
-                                     std::to_string(it->second) + " argument(s), got " + std::to_string(c.args.size()));
+        const Arity n = it->second;
+        if (c.args.size() < n.least || c.args.size() > n.most) {
+            const std::string count = n.least == n.most ? std::to_string(n.least)
+                                      : n.most == kMany ? "at least " + std::to_string(n.least)
+                                                        : std::to_string(n.least) + " to " + std::to_string(n.most);
+            throw std::runtime_error(name + ":" + std::to_string(number) + ": '" + c.name + "' takes " + count +
+                                     " argument(s), got " + std::to_string(c.args.size()));
+        }
         s.commands_.push_back(std::move(c));
     }
     return s;

@@ -8,8 +8,22 @@
 //   expect-pick CLASS|none   fail unless the last pick hit a CLASS (or nothing)
 //   key NAME                 space r w l h f1 left right 0..9
 //   camera I                 -1 orbit, else the I-th camera
-//   screenshot PATH          render one frame and save the 3D view as PNG
+//   screenshot [PATH]        render one frame and save the 3D view as PNG
+//                            (no PATH: the next free m3g-screenshot-NNNN.png)
 //   screenshot-ui PATH       the same with the panels (the whole window)
+//   select ID                select the object with `m3g info` id ID
+//   edit ID PROPERTY V...    edit a property (ViewerEdit.h names them), undoable
+//   expect ID PROPERTY V...  fail unless the property has these values (1e-3)
+//   undo | redo              the edit stack
+//   save PATH                write the scene with m3g::Saver
+//   panels on|off            show / hide the panels (F1)
+//   layout                   print the layout's rectangles
+//   expect-view X Y W H      fail unless the 3D view is that rectangle
+//   splitter NAME PIXELS     set a layout size as dragging its splitter
+//                            does (left, right: column widths; left-split,
+//                            right-split1, right-split2: shares 0..1)
+//   expect-pixel PNG X Y RRGGBB   fail unless pixel (X, Y) of a PNG (e.g. a
+//                            screenshot-ui) has that colour (+-8 per channel)
 //   quit
 #pragma once
 

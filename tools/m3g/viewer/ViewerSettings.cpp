@@ -28,6 +28,11 @@ Settings Settings::load() {
             if (key == "width") s.width = std::clamp(std::stoi(value), 64, 8192);
             else if (key == "height") s.height = std::clamp(std::stoi(value), 64, 8192);
             else if (key == "lastFile") s.lastFile = value;
+            else if (key == "leftColumn") s.layout.left = std::stof(value);
+            else if (key == "rightColumn") s.layout.right = std::stof(value);
+            else if (key == "leftSplit") s.layout.leftSplit = std::stof(value);
+            else if (key == "rightSplit1") s.layout.rightSplit1 = std::stof(value);
+            else if (key == "rightSplit2") s.layout.rightSplit2 = std::stof(value);
         } catch (const std::exception&) {
             // A hand-edited value that is not a number: keep the default.
         }
@@ -41,7 +46,9 @@ void Settings::save() const {
     std::error_code ec;
     std::filesystem::create_directories(std::filesystem::path(file).parent_path(), ec);
     std::ofstream out(file);
-    out << "width=" << width << "\nheight=" << height << "\nlastFile=" << lastFile << "\n";
+    out << "width=" << width << "\nheight=" << height << "\nlastFile=" << lastFile << "\nleftColumn=" << layout.left
+        << "\nrightColumn=" << layout.right << "\nleftSplit=" << layout.leftSplit << "\nrightSplit1=" << layout.rightSplit1
+        << "\nrightSplit2=" << layout.rightSplit2 << "\n";
     if (!out) std::fprintf(stderr, "m3g: view: could not save settings to %s\n", file.c_str());
 }
 

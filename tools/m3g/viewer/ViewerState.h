@@ -12,6 +12,8 @@
 #include <m3g/m3g.h>
 #include <m3g/vk/Vulkan.h>
 
+#include "ViewerEdit.h"
+#include "ViewerLayout.h"
 #include "ViewerScene.h"
 
 namespace m3gview {
@@ -37,6 +39,20 @@ struct ViewerState {
     double timeMs = 0.0;
     std::vector<float> controllerWeights;  ///< saved weights of disabled controllers
 
+    // Layout (ViewerLayout.h): sizes the splitters set, and the rectangles
+    // of this frame for a framebuffer fbWidth x fbHeight under a menu bar
+    // menuHeight pixels high (updateLayout in ViewerInput.h).
+    LayoutSizes layoutSizes;
+    Layout layout;
+    int fbWidth = 0, fbHeight = 0;
+    float menuHeight = 19.0f;  ///< ImGui's default frame height until the first frame says
+
+    // Edits of the scene (undo/redo) and where Ctrl+S saves.
+    EditStack edits;
+    std::string savePath;
+    /// The last action's outcome (screenshot name, save, undo), shown in the menu bar.
+    std::string status;
+
     // View.
     bool showUi = true;
     m3g::vk::DebugView debug;
@@ -54,8 +70,9 @@ struct ViewerState {
 
     // Requests from the UI, handled by the loop.
     std::string openRequest;      ///< a file (or "jar!entry") to open
-    std::string screenshotPath;   ///< save the next frame here
+    std::string screenshotPath;   ///< save the next frame's 3D view here
     bool resetViewRequest = false;
+    bool saveRequest = false, undoRequest = false, redoRequest = false;  ///< menu items
     bool quit = false;
 };
 

@@ -42,13 +42,121 @@ const char* propertyName(int property) {
     return i >= 0 && i < static_cast<int>(std::size(names)) ? names[i] : "?";
 }
 
-// Where a panel starts (fractions of the window), until the user moves it.
-bool beginPanel(const char* name, float x, float y, float w, float h) {
-    const ImVec2 size = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(x * size.x, 20.0f + y * (size.y - 20.0f)), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(w * size.x, h * (size.y - 20.0f)), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowBgAlpha(0.85f);
-    return ImGui::Begin(name);
+// A docked panel: placed on its layout rectangle every frame (ImGui 1.89
+// has no docking); the splitters resize it.
+bool beginPanel(const char* name, const Rect& r) {
+    ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(std::max(r.w, 1.0f), std::max(r.h, 1.0f)), ImGuiCond_Always);
+    constexpr ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                       ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
+    return ImGui::Begin(name, nullptr, flags);
+}
+
+// A splitter bar on `r`: dragging it adds the mouse motion times
+// `perPixel` to `value` (a column width, or a share of a column).
+void splitter(const char* id, const Rect& r, bool vertical, float& value, float perPixel) {
+    if (r.w <= 0.0f || r.h <= 0.0f) return;
+    ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(r.w, r.h), ImGuiCond_Always);
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowMinSize, ImVec2(1, 1));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+    constexpr ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                       ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBackground |
+                                       ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoFocusOnAppearing;
+    ImGui::Begin(id, nullptr, flags);
+    ImGui::InvisibleButton("##bar", ImVec2(r.w, r.h));
+    const bool hot = ImGui::IsItemHovered() || ImGui::IsItemActive();
+    if (hot) ImGui::SetMouseCursor(vertical ? ImGuiMouseCursor_ResizeEW : ImGuiMouseCursor_ResizeNS);
+    if (ImGui::IsItemActive()) value += (vertical ? ImGui::GetIO().MouseDelta.x : ImGui::GetIO().MouseDelta.y) * perPixel;
+    ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h),
+                                              ImGui::GetColorU32(hot ? ImGuiCol_SeparatorActive : ImGuiCol_Separator));
+    ImGui::End();
+    ImGui::PopStyleVar(3);
+}
+
+// ---- edits ----
+
+// The edit a widget is making (values applied live while it is dragged),
+// recorded on the undo stack once no widget is active any more.
+struct PendingEdit {
+    Ref<Object3D> target;
+    const EditProperty* property = nullptr;
+    std::vector<float> before;
+    int worldTime = 0;
+    const ViewerScene* scene = nullptr;  ///< the scene it was made in
+};
+PendingEdit pending;
+
+void commitPending(ViewerState& state) {
+    if (!pending.property) return;
+    if (pending.scene != state.scene.get()) {  // another file was opened meanwhile: its stack is not for this
+        pending = {};
+        return;
+    }
+    Edit e;
+    e.target = pending.target;
+    e.property = pending.property;
+    e.before = pending.before;
+    e.after = pending.property->get(*pending.target);
+    e.worldTime = pending.worldTime;
+    if (e.after != e.before) {
+        state.status = state.scene->numbering().label(*e.target) + ": " + describe(*e.property, e.after);
+        state.edits.push(std::move(e));
+    }
+    pending = {};
+}
+
+void editor(ViewerState& state, Object3D& o, const EditProperty& p) {
+    std::vector<float> v = p.get(o);
+    const std::vector<float> before = v;
+    bool changed = false;
+    const char* label = p.label;
+    const std::string name = p.name;
+    switch (p.kind) {
+        case EditKind::Color3: changed = ImGui::ColorEdit3(label, v.data()); break;
+        case EditKind::Color4: changed = ImGui::ColorEdit4(label, v.data()); break;
+        case EditKind::Float:
+            if (name == "shininess") changed = ImGui::DragFloat(label, v.data(), 0.5f, 0.0f, 128.0f);
+            else if (name == "weight") changed = ImGui::DragFloat(label, v.data(), 0.01f, 0.0f, 100.0f);
+            else changed = ImGui::DragFloat(label, v.data(), 0.01f);
+            break;
+        case EditKind::Float3: changed = ImGui::DragFloat3(label, v.data(), 0.01f); break;
+        case EditKind::AngleAxis: changed = ImGui::DragFloat4(label, v.data(), 0.5f); break;
+        case EditKind::Int2: {
+            int iv[2] = {static_cast<int>(v[0]), static_cast<int>(v[1])};
+            changed = ImGui::DragInt2(label, iv, 10.0f);
+            v = {static_cast<float>(iv[0]), static_cast<float>(iv[1])};
+            break;
+        }
+        case EditKind::Bool: {
+            bool on = v[0] != 0.0f;
+            if (ImGui::Checkbox(label, &on)) {
+                // A click is a whole edit.
+                commitPending(state);
+                Edit e;
+                e.target = Ref<Object3D>(&o);
+                e.property = &p;
+                e.after = {on ? 1.0f : 0.0f};
+                e.worldTime = static_cast<int>(state.timeMs);
+                state.edits.perform(std::move(e));
+                state.status = state.scene->numbering().label(o) + ": " + describe(p, {on ? 1.0f : 0.0f});
+            }
+            return;
+        }
+    }
+    if (p.kind == EditKind::AngleAxis && ImGui::IsItemHovered()) ImGui::SetTooltip("angle (degrees), axis x y z");
+    if (p.kind == EditKind::Int2 && ImGui::IsItemHovered()) ImGui::SetTooltip("start, end (world time, ms)");
+    if (!changed) return;
+    if (pending.property != &p || pending.target.get() != &o) {
+        commitPending(state);
+        pending = {Ref<Object3D>(&o), &p, before, static_cast<int>(state.timeMs), state.scene.get()};
+    }
+    try {
+        p.set(o, v, pending.worldTime);
+    } catch (const std::exception& e) {
+        state.status = std::string(p.name) + ": " + e.what();
+    }
 }
 
 // "Class #id userID=N" with the ids of `m3g info` (one numbering in the
@@ -69,7 +177,14 @@ void sceneTree(ViewerState& state, Node& node) {
     if (state.selected == &node) flags |= ImGuiTreeNodeFlags_Selected;
     bool visible = node.isRenderingEnabled();
     ImGui::PushID(static_cast<int>(node.getObjectId()));
-    if (ImGui::Checkbox("##visible", &visible)) node.setRenderingEnable(visible);
+    if (ImGui::Checkbox("##visible", &visible)) {
+        commitPending(state);
+        Edit e;
+        e.target = Ref<Object3D>(&node);
+        e.property = findEditProperty(node, "rendering");
+        e.after = {visible ? 1.0f : 0.0f};
+        state.edits.perform(std::move(e));
+    }
     ImGui::SameLine();
     const bool open = ImGui::TreeNodeEx(label(state, node).c_str(), flags);
     if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) state.selected = &node;
@@ -102,7 +217,7 @@ const char* declaringClass(const std::string& key, const char* cls) {
 }
 
 void properties(ViewerState& state) {
-    if (!beginPanel("Properties", 0.74f, 0.0f, 0.26f, 0.55f)) {
+    if (!beginPanel("Properties", state.layout.properties)) {
         ImGui::End();
         return;
     }
@@ -131,6 +246,15 @@ void properties(ViewerState& state) {
             nlohmann::ordered_json::parse(m3gcli::dumpJson(std::span<Object3D* const>(&root, 1), options));
         cache = {root->getObjectId(), root->getRevision(), state.timeMs, doc["objects"][0]};
     }
+    // Editable properties first (undo: Ctrl+Z, redo: Ctrl+Y).
+    if (const auto editable = editPropertiesOf(*root); !editable.empty()) {
+        ImGui::TextUnformatted(state.scene->numbering().label(*root).c_str());
+        if (ImGui::CollapsingHeader("Edit", ImGuiTreeNodeFlags_DefaultOpen)) {
+            ImGui::PushItemWidth(-ImGui::GetContentRegionAvail().x * 0.45f);
+            for (const EditProperty* p : editable) editor(state, *root, *p);
+            ImGui::PopItemWidth();
+        }
+    }
     const nlohmann::ordered_json& o = cache.object;
     const char* cls = root->getClassName();
     std::string current;
@@ -151,7 +275,7 @@ void properties(ViewerState& state) {
 
 void animation(ViewerState& state) {
     ViewerScene& scene = *state.scene;
-    if (!beginPanel("Animation", 0.24f, 0.82f, 0.5f, 0.18f)) {
+    if (!beginPanel("Animation", state.layout.animation)) {
         ImGui::End();
         return;
     }
@@ -209,10 +333,6 @@ void animation(ViewerState& state) {
 }
 
 void textures(ViewerState& state, vk::ImGuiOverlay& overlay) {
-    if (!beginPanel("Textures", 0.74f, 0.55f, 0.26f, 0.45f)) {
-        ImGui::End();
-        return;
-    }
     const auto& images = state.scene->images();
     if (images.empty()) ImGui::TextDisabled("No Image2D in the file.");
     for (const auto& image : images) {
@@ -223,24 +343,38 @@ void textures(ViewerState& state, vk::ImGuiOverlay& overlay) {
         if (ImGui::IsItemClicked()) state.selected = image.get();
         ImGui::Separator();
     }
-    ImGui::End();
 }
 
-void objectsInFileOrder(ViewerState& state) {
-    if (!beginPanel("Objects", 0.0f, 0.5f, 0.24f, 0.5f)) {
+// The left column's lower panel: the objects in file order, and the textures.
+void objectsAndTextures(ViewerState& state, vk::ImGuiOverlay& overlay) {
+    if (!beginPanel("Objects", state.layout.objects)) {
         ImGui::End();
         return;
     }
-    for (const auto& o : state.scene->loaded().objects) {
-        const std::string text = label(state, *o);
-        if (ImGui::Selectable(text.c_str(), state.selected == o.get())) state.selected = o.get();
+    if (ImGui::BeginTabBar("objects-tabs")) {
+        if (ImGui::BeginTabItem("Objects")) {
+            ImGui::BeginChild("objects-list");
+            for (const auto& o : state.scene->loaded().objects) {
+                const std::string text = label(state, *o);
+                if (ImGui::Selectable(text.c_str(), state.selected == o.get())) state.selected = o.get();
+            }
+            ImGui::EndChild();
+            ImGui::EndTabItem();
+        }
+        if (ImGui::BeginTabItem("Textures")) {
+            ImGui::BeginChild("textures-list");
+            textures(state, overlay);
+            ImGui::EndChild();
+            ImGui::EndTabItem();
+        }
+        ImGui::EndTabBar();
     }
     ImGui::End();
 }
 
 void statsAndDebug(ViewerState& state) {
     ViewerScene& scene = *state.scene;
-    if (!beginPanel("View", 0.24f, 0.0f, 0.3f, 0.32f)) {
+    if (!beginPanel("View", state.layout.stats)) {
         ImGui::End();
         return;
     }
@@ -270,7 +404,13 @@ void statsAndDebug(ViewerState& state) {
     if (!scene.cameraError().empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", scene.cameraError().c_str());
     if (ImGui::Button("Reset view (R)")) state.resetViewRequest = true;
     ImGui::SameLine();
-    if (ImGui::Button("Screenshot")) state.screenshotPath = "m3g-screenshot.png";
+    if (ImGui::Button("Screenshot (S)")) {
+        try {
+            state.screenshotPath = nextScreenshotName();
+        } catch (const std::exception& e) {
+            state.status = e.what();
+        }
+    }
     ImGui::Checkbox("wireframe (W)", &state.debug.wireframe);
     ImGui::SameLine();
     ImGui::Checkbox("unlit (L)", &state.debug.unlit);
@@ -295,26 +435,56 @@ void statsAndDebug(ViewerState& state) {
             ImGui::Text("pick at (%.0f, %.0f): nothing", p.x, p.y);
         }
     }
+    if (!state.warnings.empty()) {
+        ImGui::Separator();
+        if (ImGui::CollapsingHeader(("Messages (" + std::to_string(state.warnings.size()) + ")###messages").c_str()))
+            for (const auto& w : state.warnings) ImGui::TextWrapped("%s", w.c_str());
+    }
     ImGui::End();
 }
 
 void menu(ViewerState& state) {
     static char path[1024] = "";
+    static char saveAs[1024] = "";
+    static std::string shownSavePath;
+    if (shownSavePath != state.savePath) {  // a new file: its default save path
+        shownSavePath = state.savePath;
+        std::snprintf(saveAs, sizeof saveAs, "%s", state.savePath.c_str());
+    }
     if (!ImGui::BeginMainMenuBar()) return;
     if (ImGui::BeginMenu("File")) {
         ImGui::InputText("path", path, sizeof path);
         if (ImGui::MenuItem("Open")) state.openRequest = path;
+        ImGui::Separator();
+        if (ImGui::InputText("save as", saveAs, sizeof saveAs)) state.savePath = shownSavePath = saveAs;
+        if (ImGui::MenuItem("Save", "Ctrl+S", false, state.scene != nullptr)) state.saveRequest = true;
+        ImGui::Separator();
         if (ImGui::MenuItem("Quit", "Esc")) state.quit = true;
         ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Edit")) {
+        if (ImGui::MenuItem("Undo", "Ctrl+Z", false, state.edits.canUndo())) state.undoRequest = true;
+        if (ImGui::MenuItem("Redo", "Ctrl+Y", false, state.edits.canRedo())) state.redoRequest = true;
+        ImGui::EndMenu();
+    }
+    if (!state.status.empty()) {
+        ImGui::Separator();
+        ImGui::TextUnformatted(state.status.c_str());
     }
     ImGui::EndMainMenuBar();
 }
 
+// Load errors and a JAR's entries, over the top of the 3D view (they need an answer).
 void messages(ViewerState& state) {
-    if (state.error.empty() && state.warnings.empty() && state.jarEntries.empty()) return;
-    beginPanel("Messages", 0.54f, 0.0f, 0.2f, 0.2f);
+    if (state.error.empty() && state.jarEntries.empty() && (state.scene || state.warnings.empty())) return;
+    const Rect& v = state.layout.view;
+    ImGui::SetNextWindowPos(ImVec2(v.x + 8.0f, v.y + 8.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(std::max(v.w - 16.0f, 64.0f), std::max(v.h - 16.0f, 64.0f)));
+    ImGui::Begin("Messages", nullptr,
+                 ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
     if (!state.error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", state.error.c_str());
-    for (const auto& w : state.warnings) ImGui::TextWrapped("%s", w.c_str());
+    if (!state.scene)
+        for (const auto& w : state.warnings) ImGui::TextWrapped("%s", w.c_str());
     if (!state.jarEntries.empty()) {
         ImGui::Text("%s: pick a model", state.jarPath.c_str());
         for (const auto& e : state.jarEntries)
@@ -325,18 +495,30 @@ void messages(ViewerState& state) {
 
 }  // namespace
 
-void drawUi(ViewerState& state, vk::ImGuiOverlay& overlay, int, int) {
+void drawUi(ViewerState& state, vk::ImGuiOverlay& overlay) {
     menu(state);
+    if (state.scene) {
+        const Layout& l = state.layout;
+        beginPanel("Scene", l.scene);
+        sceneTree(state, state.scene->world());
+        ImGui::End();
+        objectsAndTextures(state, overlay);
+        properties(state);
+        animation(state);
+        statsAndDebug(state);
+        // Splitters: the columns' widths beside the view, the rows within them.
+        LayoutSizes& s = state.layoutSizes;
+        const float colH = std::max(1.0f, l.scene.h + l.objects.h + Layout::kGap);
+        splitter("##split-left", l.leftSplitter, true, s.left, 1.0f);
+        splitter("##split-right", l.rightSplitter, true, s.right, -1.0f);
+        splitter("##split-left-rows", l.leftRowSplitter, false, s.leftSplit, 1.0f / colH);
+        splitter("##split-right-rows1", l.rightRowSplitter1, false, s.rightSplit1, 1.0f / colH);
+        splitter("##split-right-rows2", l.rightRowSplitter2, false, s.rightSplit2, 1.0f / colH);
+        s = clampSizes(s, state.fbWidth, state.fbHeight);
+    }
     messages(state);
-    if (!state.scene) return;
-    beginPanel("Scene", 0.0f, 0.0f, 0.24f, 0.5f);
-    sceneTree(state, state.scene->world());
-    ImGui::End();
-    objectsInFileOrder(state);
-    properties(state);
-    animation(state);
-    textures(state, overlay);
-    statsAndDebug(state);
+    // A widget's edit is one undo step once the widget is let go.
+    if (pending.property && !ImGui::IsAnyItemActive()) commitPending(state);
 }
 
 // ---- debug lines ----
@@ -345,13 +527,13 @@ namespace {
 
 struct Projector {
     Transform worldToClip;
-    float w, h;
+    float x, y, w, h;  ///< the view's rectangle in the window
     /// Pixel position of a world point, or false when behind the camera.
     bool operator()(const float* p, ImVec2& out) const {
         float v[4] = {p[0], p[1], p[2], 1.0f};
         worldToClip.transform(v);
         if (v[3] <= 1e-6f) return false;
-        out = ImVec2((v[0] / v[3] * 0.5f + 0.5f) * w, (0.5f - v[1] / v[3] * 0.5f) * h);
+        out = ImVec2(x + (v[0] / v[3] * 0.5f + 0.5f) * w, y + (0.5f - v[1] / v[3] * 0.5f) * h);
         return true;
     }
 };
@@ -438,7 +620,7 @@ void meshLines(ViewerState& state, World& world, Node& node, const Projector& pr
 
 }  // namespace
 
-void drawDebugLines(ViewerState& state, int width, int height) {
+void drawDebugLines(ViewerState& state) {
     if (!state.scene || !(state.showNormals || state.showBounds || state.showBones)) return;
     World& world = state.scene->world();
     Ref<Camera> camera = world.getActiveCamera();
@@ -449,10 +631,16 @@ void drawDebugLines(ViewerState& state, int width, int height) {
     Transform view = cameraToWorld;
     view.invert();
     proj.worldToClip.postMultiply(&view);
-    proj.w = static_cast<float>(width);
-    proj.h = static_cast<float>(height);
+    const Rect& v = state.layout.view;
+    proj.x = v.x;
+    proj.y = v.y;
+    proj.w = v.w;
+    proj.h = v.h;
     int budget = 20000;  // normals drawn at most
-    meshLines(state, world, world, proj, ImGui::GetBackgroundDrawList(), budget);
+    ImDrawList* dl = ImGui::GetBackgroundDrawList();
+    dl->PushClipRect(ImVec2(v.x, v.y), ImVec2(v.x + v.w, v.y + v.h));
+    meshLines(state, world, world, proj, dl, budget);
+    dl->PopClipRect();
 }
 
 }  // namespace m3gview

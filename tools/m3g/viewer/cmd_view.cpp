@@ -4,6 +4,7 @@
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <chrono>
 #include <climits>
 #include <exception>
@@ -107,8 +108,11 @@ void ViewerApp::open(const std::string& request) {
     state_.selected = nullptr;
     state_.pick.reset();
     state_.controllerWeights.clear();
+    state_.edits.clear();  // the edits belong to the scene they were made on
     try {
-        auto scene = openScene(request, fbWidth_, fbHeight_, state_);
+        updateLayout(state_);
+        const PixelRect view = pixels(state_.layout.view);
+        auto scene = openScene(request, view.w, view.h, state_);
         if (!scene) return;  // a JAR: its entries are listed
         state_.scene = std::move(scene);
         for (const auto& w : state_.scene->loaded().warnings) state_.warnings.push_back("warning: " + w);
@@ -117,6 +121,9 @@ void ViewerApp::open(const std::string& request) {
         if (args_.camera >= -1 && !state_.scene->useCamera(args_.camera))
             state_.warnings.push_back("--camera-index: " + state_.scene->cameraError());
         settings_.lastFile = request;
+        // Ctrl+S writes next to the file, never over it unless asked (File > Save as).
+        const std::filesystem::path file(request.substr(0, request.find(".jar!")));
+        state_.savePath = (file.parent_path() / (file.stem().string() + "-edited.m3g")).string();
         glfwSetWindowTitle(window_, ("m3g view: " + request).c_str());
     } catch (const std::exception& e) {
         state_.error = request + ": " + e.what();
@@ -124,13 +131,32 @@ void ViewerApp::open(const std::string& request) {
     }
 }
 
-void ViewerApp::saveScreenshot(const std::string& path, bool withUi) {
-    // The 3D view, or the whole window with the UI.
+void ViewerApp::saveScreenshot(const std::string& request, bool withUi) {
+    // The 3D view's rectangle, or the whole window with the UI; no path:
+    // the next free m3g-screenshot-NNNN.png here (never overwriting).
+    const std::string path = request.empty() ? nextScreenshotName() : request;
     target_->requestReadback(withUi);
     frame();
     if (!target_->readbackReady()) throw std::runtime_error("view: the screenshot frame was not rendered");
-    writeImage(path, fromGraphics(*target_), false);
-    std::fprintf(stderr, "m3g: wrote %s (%dx%d)\n", path.c_str(), target_->getWidth(), target_->getHeight());
+    m3gcli::RgbaImage image = fromGraphics(*target_);
+    if (!withUi) {
+        const PixelRect v = pixels(state_.layout.view);
+        const int x0 = std::clamp(v.x, 0, image.width), y0 = std::clamp(v.y, 0, image.height);
+        const int w = std::clamp(v.w, 0, image.width - x0), h = std::clamp(v.h, 0, image.height - y0);
+        if (w != image.width || h != image.height) {
+            m3gcli::RgbaImage crop;
+            crop.width = w;
+            crop.height = h;
+            crop.pixels.resize(static_cast<std::size_t>(w) * h * 4);
+            for (int y = 0; y < h; ++y)
+                std::copy_n(image.pixels.begin() + ((static_cast<std::ptrdiff_t>(y0 + y) * image.width + x0) * 4), w * 4,
+                            crop.pixels.begin() + static_cast<std::ptrdiff_t>(y) * w * 4);
+            image = std::move(crop);
+        }
+    }
+    writeImage(path, image, false);
+    state_.status = "screenshot: " + path;
+    std::fprintf(stderr, "m3g: wrote %s (%dx%d)\n", path.c_str(), image.width, image.height);
 }
 
 void ViewerApp::frame() {
@@ -144,16 +170,23 @@ void ViewerApp::frame() {
         fbWidth_ = w;
         fbHeight_ = h;
         target_->resize(w, h);
-        if (state_.scene) state_.scene->applyOrbit(w, h);
     }
+    state_.fbWidth = w;
+    state_.fbHeight = h;
+    updateLayout(state_);  // (the orbit camera follows the view's size)
     // Interactive sessions follow the clock; tests (frames/script) do not.
     if (state_.playing && args_.frames < 0 && args_.script.empty()) state_.timeMs += dt * state_.speed;
 
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
-    if (state_.showUi) drawUi(state_, *overlay_, w, h);
-    drawDebugLines(state_, w, h);
+    if (state_.menuHeight != ImGui::GetFrameHeight()) {
+        state_.menuHeight = ImGui::GetFrameHeight();
+        updateLayout(state_);
+    }
+    if (state_.showUi) drawUi(state_, *overlay_);
+    drawDebugLines(state_);
     ImGui::Render();
+    const PixelRect view = pixels(state_.layout.view);
 
     m3g::vk::setDebugView(state_.debug);
     m3g::Graphics3D* g3d = m3g::Graphics3D::getInstance();
@@ -161,6 +194,10 @@ void ViewerApp::frame() {
     const auto t0 = Clock::now();
     g3d->bindTarget(target_.get(), true, 0);
     try {
+        // The M3G frame goes into the 3D view's rectangle only; with panels
+        // the whole target is cleared first (the gaps between the panels).
+        if (state_.layout.panels) g3d->clear(nullptr);
+        g3d->setViewport(view.x, view.y, view.w, view.h);
         if (state_.scene) {
             state_.scene->animate(static_cast<int>(state_.timeMs));
             state_.scene->followCamera();
@@ -224,6 +261,10 @@ int ViewerApp::run() {
     overlay_ = std::make_shared<m3g::vk::ImGuiOverlay>();
     target_->setOverlay(overlay_);
     state_.showUi = !args_.noUi;
+    state_.layoutSizes = settings_.layout;
+    state_.fbWidth = fbWidth_;
+    state_.fbHeight = fbHeight_;
+    updateLayout(state_);
     state_.lenient = args_.lenient;
     state_.timeMs = args_.time;
 
@@ -234,9 +275,9 @@ int ViewerApp::run() {
         else if (!settings_.lastFile.empty() && args_.frames < 0 && args_.script.empty()) open(settings_.lastFile);
         if (!args_.script.empty()) {
             Script script = Script::load(args_.script);
-            rc = script.run([&](const ScriptCommand& c) { return input_.apply(c, [&] { frame(); },
-                                                                               [&](const std::string& p, bool ui) { saveScreenshot(p, ui); },
-                                                                               fbWidth_, fbHeight_); });
+            rc = script.run([&](const ScriptCommand& c) {
+                return input_.apply(c, [&] { frame(); }, [&](const std::string& p, bool ui) { saveScreenshot(p, ui); });
+            });
         } else if (args_.frames > 0) {
             for (int i = 0; i + 1 < args_.frames; ++i) frame();
             if (!args_.screenshot.empty()) saveScreenshot(args_.screenshot);
@@ -250,10 +291,15 @@ int ViewerApp::run() {
                 }
                 if (auto dropped = input_.takeDrop()) open(*dropped);
                 if (state_.resetViewRequest && state_.scene) {
-                    state_.scene->resetView(fbWidth_, fbHeight_);
+                    const PixelRect view = pixels(state_.layout.view);
+                    state_.scene->resetView(view.w, view.h);
                     state_.scene->useCamera(-1);
                 }
                 state_.resetViewRequest = false;
+                if (state_.saveRequest) input_.save("");
+                if (state_.undoRequest) input_.undo();
+                if (state_.redoRequest) input_.redo();
+                state_.saveRequest = state_.undoRequest = state_.redoRequest = false;
                 if (!state_.screenshotPath.empty()) {
                     saveScreenshot(state_.screenshotPath);
                     state_.screenshotPath.clear();
@@ -265,6 +311,7 @@ int ViewerApp::run() {
             glfwGetWindowSize(window_, &w, &h);
             settings_.width = w;
             settings_.height = h;
+            settings_.layout = state_.layoutSizes;
         }
         // Unattended runs fail when the file did not open (3) or a frame did not render (5).
         if (!state_.error.empty() && (args_.frames > 0 || !args_.script.empty()) && rc == kExitOk)
