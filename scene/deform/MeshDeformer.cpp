@@ -285,8 +285,11 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
     }
     if (compact_ && output_ == Output::Vertices) {
         const auto order = partition_.compactOrder();
-        skin::scatterXyz(order, compactOutPositions_.data(), out_.positions.data());
-        if (!compactOutNormals_.empty()) skin::scatterXyz(order, compactOutNormals_.data(), out_.normals.data());
+        if (compactOutNormals_.empty())
+            skin::scatterXyz(order, compactOutPositions_.data(), out_.positions.data());
+        else
+            skin::scatterXyz(order, compactOutPositions_.data(), out_.positions.data(), compactOutNormals_.data(),
+                             out_.normals.data());
     }
     finish();
     return true;

@@ -432,4 +432,23 @@ void scatterXyz(std::span<const std::uint32_t> order, const float* in, float* ou
     }
 }
 
+void scatterXyz(std::span<const std::uint32_t> order, const float* in, float* out, const float* in2,
+                float* out2) noexcept {
+    const std::uint32_t* o = order.data();
+    const std::size_t n = order.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        std::uint64_t xy, xy2;
+        float z, z2;
+        std::memcpy(&xy, in + i * 3, sizeof xy);
+        std::memcpy(&z, in + i * 3 + 2, sizeof z);
+        std::memcpy(&xy2, in2 + i * 3, sizeof xy2);
+        std::memcpy(&z2, in2 + i * 3 + 2, sizeof z2);
+        const std::size_t d = std::size_t{o[i]} * 3;
+        std::memcpy(out + d, &xy, sizeof xy);
+        std::memcpy(out + d + 2, &z, sizeof z);
+        std::memcpy(out2 + d, &xy2, sizeof xy2);
+        std::memcpy(out2 + d + 2, &z2, sizeof z2);
+    }
+}
+
 }  // namespace m3g::skin

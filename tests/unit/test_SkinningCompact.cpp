@@ -59,8 +59,7 @@ void skinCompact(const m3gtest::RandomMesh& m, const std::vector<PaletteEntry>& 
         cj.outNormals = con;
         ASSERT_TRUE(pool ? cj.runParallel(*pool, grain) : cj.run()) << "compact group " << c;
     }
-    scatterXyz(order, cop.data(), pos.data());
-    scatterXyz(order, con.data(), nrm.data());
+    scatterXyz(order, cop.data(), pos.data(), con.data(), nrm.data());
 }
 
 /// A mesh (stride 4) whose vertices come in stretches sharing bones, some
@@ -301,4 +300,10 @@ TEST(SkinningJob, ScatterXyzWritesOnlyTheListedTriples) {
     scatterXyz(order, in.data(), out.data());
     const std::vector<float> expect{4, 5, 6, -1, -1, -1, 7, 8, 9, -1, -1, -1, 1, 2, 3, -1};
     EXPECT_EQ(out, expect);
+    std::vector<float> a(16, -1.0f), b(16, -1.0f);
+    const std::vector<float> in2{10, 20, 30, 40, 50, 60, 70, 80, 90};
+    scatterXyz(order, in.data(), a.data(), in2.data(), b.data());
+    EXPECT_EQ(a, expect);
+    const std::vector<float> expect2{40, 50, 60, -1, -1, -1, 70, 80, 90, -1, -1, -1, 10, 20, 30, -1};
+    EXPECT_EQ(b, expect2);
 }

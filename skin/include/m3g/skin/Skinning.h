@@ -183,5 +183,9 @@ private:
 /// compact outputs written back to their mesh vertices. Three floats
 /// written per vertex, none other.
 void scatterXyz(std::span<const std::uint32_t> order, const float* in, float* out) noexcept;
+/// The same for two pairs of arrays in one pass (positions and normals:
+/// each index read once).
+void scatterXyz(std::span<const std::uint32_t> order, const float* in, float* out, const float* in2,
+                float* out2) noexcept;
 
 }  // namespace m3g::skin
