@@ -497,7 +497,8 @@ TEST(SkinnedMeshDeform, InterleavedInfluencesKeepTheMeshOrder) {
     const int n = 24;
     Shorts pos, nrm;
     for (int v = 0; v < n; ++v) {
-        pos.insert(pos.end(), {static_cast<std::int16_t>(v), static_cast<std::int16_t>(2 * v), static_cast<std::int16_t>(-v)});
+        const auto c = static_cast<std::int16_t>(v);
+        pos.insert(pos.end(), {c, static_cast<std::int16_t>(2 * v), static_cast<std::int16_t>(-v)});
         nrm.insert(nrm.end(), {0, 0, 1000});
     }
     Rig r(makeVB(pos, 1.0f, {0, 0, 0}, nrm), 2);

@@ -156,7 +156,8 @@ TEST(InfluencePartition, CompactSpaceSortsLooseVerticesByInfluenceSet) {
                 for (std::uint32_t v = r.firstVertex; v < r.firstVertex + r.vertexCount; ++v) {
                     ++covered[v];
                     ASSERT_EQ(0, std::memcmp(&part.compactBones()[v * 4], &part.compactBones()[r.firstVertex * 4], 16));
-                    ASSERT_EQ(0, std::memcmp(&part.compactWeights()[v * 4], &part.compactWeights()[r.firstVertex * 4], 16));
+                    ASSERT_EQ(0, std::memcmp(&part.compactWeights()[v * 4],
+                                             &part.compactWeights()[r.firstVertex * 4], 16));
                 }
             }
             for (std::uint32_t v : part.compactLoose(c)) ++covered[v];
