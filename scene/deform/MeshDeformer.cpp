@@ -176,6 +176,25 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         tableRevision_ = table.revision();
         ++inputStamp_;
     }
+    if (tableChanged || inputsChanged) {
+        // The compact space holds every loose vertex with influences when
+        // the partition could build it (a table with weights).
+        const auto order = partition_.compactOrder();
+        std::size_t loose = 0;
+        for (int c = 1; c <= partition_.maxInfluences(); ++c) loose += partition_.loose(c).size();
+        compact_ = !order.empty() && order.size() == loose;
+        const bool normals = !baseNormals_.empty();
+        compactPositions_.resize(compact_ ? order.size() * 3 : 0);
+        compactNormals_.resize(compact_ && normals ? order.size() * 3 : 0);
+        compactOutPositions_.resize(compactPositions_.size());
+        compactOutNormals_.resize(compactNormals_.size());
+        if (compact_)
+            for (std::size_t i = 0; i < order.size(); ++i) {
+                const std::size_t v = order[i];
+                std::copy_n(rawPositions_.data() + v * 3, 3, compactPositions_.data() + i * 3);
+                if (normals) std::copy_n(baseNormals_.data() + v * 3, 3, compactNormals_.data() + i * 3);
+            }
+    }
 
     // The palette, once per bone: (bone -> mesh now) x (at rest). The
     // at-rest matrices are captured by addTransform, which also changes the
@@ -229,7 +248,8 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         const auto group = partition_.group(c);
         if (group.empty()) continue;
         skin::SkinningJob job;
-        job.vertices = partition_.loose(c);
+        // With the compact space, the loose vertices go there (below).
+        if (c == 0 || !compact_) job.vertices = partition_.loose(c);
         job.runs = partition_.runs(c);
         job.vertexCount = n;
         job.influenceCount = c;
@@ -248,6 +268,28 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         job.outNormals = out_.normals;
         require(group.size() >= kParallelVertices ? job.runParallel(skin::ThreadPool::shared(), kGrain) : job.run(),
                 "skinning job");
+        if (c == 0 || !compact_ || partition_.loose(c).empty()) continue;
+        // The compact vertices with c influences (runs and loose ones) in the
+        // compact arrays, written back to their mesh vertices below.
+        job.vertices = partition_.compactLoose(c);
+        job.runs = partition_.compactRuns(c);
+        job.vertexCount = partition_.compactOrder().size();
+        job.boneIndices = partition_.compactBones();
+        job.boneWeights = partition_.compactWeights();
+        job.inPositions = compactPositions_;
+        job.outPositions = compactOutPositions_;
+        job.inNormals = compactNormals_;
+        job.outNormals = compactOutNormals_;
+        require(group.size() >= kParallelVertices ? job.runParallel(skin::ThreadPool::shared(), kGrain) : job.run(),
+                "skinning job");
+    }
+    if (compact_ && output_ == Output::Vertices) {
+        const auto order = partition_.compactOrder();
+        if (compactOutNormals_.empty())
+            skin::scatterXyz(order, compactOutPositions_.data(), out_.positions.data());
+        else
+            skin::scatterXyz(order, compactOutPositions_.data(), out_.positions.data(), compactOutNormals_.data(),
+                             out_.normals.data());
     }
     finish();
     return true;

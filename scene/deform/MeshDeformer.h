@@ -133,6 +133,12 @@ private:
     std::uint32_t tableRevision_ = 0;
     SkinInputs skinInputs_;
     skin::InfluencePartition partition_;
+    // The partition's compact space (its loose vertices sorted by influence
+    // set): inputs gathered when the inputs or the table change, outputs
+    // written back to the mesh's vertices after each skinning.
+    std::vector<float> compactPositions_, compactNormals_;
+    std::vector<float> compactOutPositions_, compactOutNormals_;
+    bool compact_ = false;
     BoneTransforms boneTransforms_;
     std::vector<float> boneMatrices_;  // 16 per bone: bone -> mesh now
     std::vector<float> atRest_;        // 16 per bone

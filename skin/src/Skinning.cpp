@@ -32,6 +32,20 @@ void runRange(const SkinningJob& job, Isa isa, std::size_t begin, std::size_t en
 
 namespace {
 
+/// `start` the running sum and every run inside [0, bound) (O(runs), no
+/// per-vertex reading); `total` receives the runs' vertex count.
+bool checkRuns(std::span<const InfluenceRun> runs, std::uint64_t bound, std::size_t* total) noexcept {
+    std::uint64_t sum = 0;
+    for (const InfluenceRun& r : runs) {
+        if (r.start != sum) return false;
+        if (static_cast<std::uint64_t>(r.firstVertex) + r.vertexCount > bound) return false;
+        sum += r.vertexCount;
+    }
+    if (sum > 0xFFFFFFFFu) return false;
+    *total = static_cast<std::size_t>(sum);
+    return true;
+}
+
 /// validate()'s checks; `runVertices` receives the runs' vertex count.
 bool check(const SkinningJob& j, std::size_t* runVertices) noexcept {
     *runVertices = 0;
@@ -53,16 +67,8 @@ bool check(const SkinningJob& j, std::size_t* runVertices) noexcept {
         limit = size < count ? 0 : std::min(limit, (size - count) / stride + 1);
     }
     const std::uint64_t bound = limit;
-    // Runs: inside the arrays, `start` the running sum (O(runs), no
-    // per-vertex reading).
-    std::uint64_t total = 0;
-    for (const InfluenceRun& r : j.runs) {
-        if (r.start != total) return false;
-        if (static_cast<std::uint64_t>(r.firstVertex) + r.vertexCount > bound) return false;
-        total += r.vertexCount;
-    }
-    if (total > 0xFFFFFFFFu) return false;
-    *runVertices = static_cast<std::size_t>(total);
+    // Runs: inside the arrays, `start` the running sum.
+    if (!checkRuns(j.runs, bound, runVertices)) return false;
     if (j.vertices.empty()) return true;
     // The list: one pass, branch-free.
     const std::uint32_t* v = j.vertices.data();
@@ -208,6 +214,88 @@ void InfluencePartition::build(std::span<const std::int32_t> boneIndices, std::s
         looseOffsets_[c + 1] = loose_.size();
         runOffsets_[c + 1] = runs_.size();
     }
+    buildCompact(boneIndices, boneWeights, weights);
+}
+
+void InfluencePartition::buildCompact(std::span<const std::int32_t> boneIndices, std::span<const float> boneWeights,
+                                      bool weights) {
+    const std::size_t ns = offsets_.size() - 2;
+    compactOrder_.clear();
+    compactBones_.clear();
+    compactWeights_.clear();
+    compactRuns_.clear();
+    compactLoose_.clear();
+    compactRunOffsets_.assign(offsets_.size(), 0);
+    compactLooseOffsets_.assign(offsets_.size(), 0);
+    std::vector<std::uint32_t>& sorted = cursorScratch_;
+    for (std::size_t c = 1; c + 1 < offsets_.size(); ++c) {
+        compactRunOffsets_[c] = compactRuns_.size();
+        compactLooseOffsets_[c] = compactLoose_.size();
+        if (!weights) continue;
+        const std::span<const std::uint32_t> group = loose(static_cast<int>(c));
+        // The used slots compared as they are in the table (bones, then
+        // weight bit patterns, then the vertex: a total order, so the
+        // compact space does not depend on the sort's implementation).
+        auto slots = [&](std::uint32_t v, std::size_t k, bool weight) {
+            if (!weight) return static_cast<std::uint32_t>(boneIndices[v * ns + k]);
+            std::uint32_t bits;
+            std::memcpy(&bits, &boneWeights[v * ns + k], sizeof bits);
+            return bits;
+        };
+        sorted.assign(group.begin(), group.end());
+        std::sort(sorted.begin(), sorted.end(), [&](std::uint32_t a, std::uint32_t b) {
+            for (int weight = 0; weight < 2; ++weight)
+                for (std::size_t k = 0; k < c; ++k) {
+                    const std::uint32_t x = slots(a, k, weight != 0), y = slots(b, k, weight != 0);
+                    if (x != y) return x < y;
+                }
+            return a < b;
+        });
+        auto same = [&](std::uint32_t a, std::uint32_t b) {
+            return std::memcmp(&boneIndices[a * ns], &boneIndices[b * ns], c * sizeof(std::int32_t)) == 0 &&
+                   std::memcmp(&boneWeights[a * ns], &boneWeights[b * ns], c * sizeof(float)) == 0;
+        };
+        auto append = [&](std::uint32_t v) {
+            compactOrder_.push_back(v);
+            compactBones_.insert(compactBones_.end(), boneIndices.begin() + static_cast<std::ptrdiff_t>(v * ns),
+                                 boneIndices.begin() + static_cast<std::ptrdiff_t>(v * ns + ns));
+            compactWeights_.insert(compactWeights_.end(), boneWeights.begin() + static_cast<std::ptrdiff_t>(v * ns),
+                                   boneWeights.begin() + static_cast<std::ptrdiff_t>(v * ns + ns));
+            return static_cast<std::uint32_t>(compactOrder_.size() - 1);
+        };
+        // Equal slots are now neighbours: runs of kMinRun or more, the
+        // rest loose (consecutive in the compact arrays).
+        std::uint32_t start = 0;
+        for (std::size_t i = 0; i < sorted.size();) {
+            std::size_t e = i + 1;
+            while (e < sorted.size() && same(sorted[i], sorted[e])) ++e;
+            if (e - i >= kMinRun) {
+                const std::uint32_t first = append(sorted[i]);
+                for (std::size_t q = i + 1; q < e; ++q) append(sorted[q]);
+                compactRuns_.push_back({first, static_cast<std::uint32_t>(e - i), start});
+                start += static_cast<std::uint32_t>(e - i);
+            } else {
+                for (std::size_t q = i; q < e; ++q) compactLoose_.push_back(append(sorted[q]));
+            }
+            i = e;
+        }
+    }
+    compactRunOffsets_.back() = compactRuns_.size();
+    compactLooseOffsets_.back() = compactLoose_.size();
+}
+
+std::span<const InfluenceRun> InfluencePartition::compactRuns(int count) const noexcept {
+    if (count < 0 || static_cast<std::size_t>(count) + 1 >= compactRunOffsets_.size()) return {};
+    const auto c = static_cast<std::size_t>(count);
+    return std::span<const InfluenceRun>(compactRuns_)
+        .subspan(compactRunOffsets_[c], compactRunOffsets_[c + 1] - compactRunOffsets_[c]);
+}
+
+std::span<const std::uint32_t> InfluencePartition::compactLoose(int count) const noexcept {
+    if (count < 0 || static_cast<std::size_t>(count) + 1 >= compactLooseOffsets_.size()) return {};
+    const auto c = static_cast<std::size_t>(count);
+    return std::span<const std::uint32_t>(compactLoose_)
+        .subspan(compactLooseOffsets_[c], compactLooseOffsets_[c + 1] - compactLooseOffsets_[c]);
 }
 
 std::span<const std::uint32_t> InfluencePartition::group(int count) const noexcept {
@@ -324,5 +412,43 @@ void skinScalar(const SkinningJob& job, std::size_t begin, std::size_t end) noex
 }
 
 }  // namespace detail
+
+}  // namespace m3g::skin
+
+namespace m3g::skin {
+
+void scatterXyz(std::span<const std::uint32_t> order, const float* in, float* out) noexcept {
+    // Two moves a triple (8 + 4 bytes) rather than three.
+    const std::uint32_t* o = order.data();
+    const std::size_t n = order.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        std::uint64_t xy;
+        float z;
+        std::memcpy(&xy, in + i * 3, sizeof xy);
+        std::memcpy(&z, in + i * 3 + 2, sizeof z);
+        float* d = out + std::size_t{o[i]} * 3;
+        std::memcpy(d, &xy, sizeof xy);
+        std::memcpy(d + 2, &z, sizeof z);
+    }
+}
+
+void scatterXyz(std::span<const std::uint32_t> order, const float* in, float* out, const float* in2,
+                float* out2) noexcept {
+    const std::uint32_t* o = order.data();
+    const std::size_t n = order.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        std::uint64_t xy, xy2;
+        float z, z2;
+        std::memcpy(&xy, in + i * 3, sizeof xy);
+        std::memcpy(&z, in + i * 3 + 2, sizeof z);
+        std::memcpy(&xy2, in2 + i * 3, sizeof xy2);
+        std::memcpy(&z2, in2 + i * 3 + 2, sizeof z2);
+        const std::size_t d = std::size_t{o[i]} * 3;
+        std::memcpy(out + d, &xy, sizeof xy);
+        std::memcpy(out + d + 2, &z, sizeof z);
+        std::memcpy(out2 + d, &xy2, sizeof xy2);
+        std::memcpy(out2 + d + 2, &z2, sizeof z2);
+    }
+}
 
 }  // namespace m3g::skin

@@ -423,6 +423,10 @@ TEST(ObjectDump, SkinnedMeshBonesAndSkeleton) {
     EXPECT_EQ(layout.at("runVertices").get<int>(), 5);
     EXPECT_EQ(layout.at("longestRun").get<int>(), 5);
     EXPECT_EQ(layout.at("looseVertices").get<int>(), 3);
+    // The compact space: v0, v1 (lower) and v2 (both), too few to share a run.
+    EXPECT_EQ(layout.at("compactRuns").get<int>(), 0);
+    EXPECT_EQ(layout.at("compactRunVertices").get<int>(), 0);
+    EXPECT_EQ(layout.at("compactLooseVertices").get<int>(), 3);
 }
 
 TEST(ObjectDump, BonesAndAlignmentTargetsOutsideReferencesAreIncluded) {

@@ -17,6 +17,8 @@
 #include <m3g/Limits.h>
 #include <m3g/SkinnedMesh.h>
 #include <m3g/TriangleStripArray.h>
+#include <m3g/skin/InfluenceTable.h>
+#include <m3g/skin/Skinning.h>
 
 #include "MeshDeformer.h"
 #include "SkinReference.h"
@@ -481,4 +483,42 @@ TEST(SkinnedMeshDeform, BoneAddedAfterAnUpdateUsesItsAtRestMatrix) {
     r.bones[1]->setTranslation(1, 5, 0);
     ASSERT_TRUE(d.update(*r.mesh));
     expectPosition(d, 1, 3, 5, 0);
+}
+
+// Vertices that share their influences without being neighbours (bones
+// interleaved vertex by vertex, as some exporters write them) go through
+// the partition's compact space, sorted by influence set, and come back to
+// their own vertices: the output order is the mesh's. 24 vertices, with
+// normals: v % 3 == 0 bone 0 alone (a compact run), v % 3 == 1 bones 0 and
+// 1 with weights that change from vertex to vertex (compact, loose), v % 3
+// == 2 bone 1 alone (a compact run); bone 0 posed T(10, 0, 0), bone 1
+// T(0, 20, 0).
+TEST(SkinnedMeshDeform, InterleavedInfluencesKeepTheMeshOrder) {
+    const int n = 24;
+    Shorts pos, nrm;
+    for (int v = 0; v < n; ++v) {
+        const auto c = static_cast<std::int16_t>(v);
+        pos.insert(pos.end(), {c, static_cast<std::int16_t>(2 * v), static_cast<std::int16_t>(-v)});
+        nrm.insert(nrm.end(), {0, 0, 1000});
+    }
+    Rig r(makeVB(pos, 1.0f, {0, 0, 0}, nrm), 2);
+    for (int v = 0; v < n; ++v) {
+        if (v % 3 != 2) r.mesh->addTransform(r.bones[0], v % 3 == 0 ? 1 : 1 + v, v, 1);
+        if (v % 3 != 0) r.mesh->addTransform(r.bones[1], v % 3 == 2 ? 1 : 30 - v, v, 1);
+    }
+    r.bones[0]->setTranslation(10, 0, 0);
+    r.bones[1]->setTranslation(0, 20, 0);
+    skin::InfluencePartition part;
+    const skin::InfluenceTable& table = r.mesh->influenceTable();
+    part.build(table.bones(), table.weights(), table.maxInfluences(), n);
+    EXPECT_EQ(part.compactOrder().size(), static_cast<std::size_t>(n));  // nothing in mesh-order runs
+    EXPECT_EQ(part.compactRuns(1).size(), 2u);                           // bone 0 alone, bone 1 alone
+    EXPECT_EQ(part.compactLoose(2).size(), 8u);                          // each its own weights
+    MeshDeformer d;
+    ASSERT_TRUE(d.update(*r.mesh));
+    for (int v = 0; v < n; ++v) {
+        double w0 = v % 3 == 0 ? 1.0 : v % 3 == 2 ? 0.0 : (1.0 + v) / ((1.0 + v) + (30.0 - v));
+        expectPosition(d, v, v + 10.0 * w0, 2.0 * v + 20.0 * (1.0 - w0), -v);
+        expectNormal(d, v, normalised(unit(0), unit(0), unit(1000)));
+    }
 }

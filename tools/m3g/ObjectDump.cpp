@@ -317,6 +317,7 @@ struct Dumper {
         partition.build(table.bones(), table.weights(), table.maxInfluences(), vertices);
         std::vector<int> byCount;
         int runs = 0, runVertices = 0, loose = 0, longest = 0;
+        int compactRuns = 0, compactRunVertices = 0, compactLoose = 0;
         for (int c = 0; c <= partition.maxInfluences(); ++c) {
             byCount.push_back(static_cast<int>(partition.group(c).size()));
             if (c == 0) continue;
@@ -326,13 +327,24 @@ struct Dumper {
                 runVertices += static_cast<int>(r.vertexCount);
                 longest = std::max(longest, static_cast<int>(r.vertexCount));
             }
+            for (const skin::InfluenceRun& r : partition.compactRuns(c)) {
+                ++compactRuns;
+                compactRunVertices += static_cast<int>(r.vertexCount);
+            }
+            compactLoose += static_cast<int>(partition.compactLoose(c).size());
         }
         Json j = Json::object();
         j["verticesByInfluenceCount"] = ints(byCount);
         j["runs"] = runs;
         j["runVertices"] = runVertices;
         j["longestRun"] = longest;
+        // Vertices in no run of the mesh's order; the kernels take them in
+        // the compact space (sorted by influence set): as runs sharing
+        // every slot, or one by one (compactLooseVertices).
         j["looseVertices"] = loose;
+        j["compactRuns"] = compactRuns;
+        j["compactRunVertices"] = compactRunVertices;
+        j["compactLooseVertices"] = compactLoose;
         return j;
     }
 

@@ -46,7 +46,6 @@ struct SkinningJob {
     /// run's first vertex: a run whose vertices differ is computed with the
     /// first one's slots for all (still never read or written out of bounds).
     std::span<const InfluenceRun> runs;
-
     /// Influences used per listed vertex: slots 0 .. influenceCount-1.
     /// 0 means "no bone": the vertex stays in mesh space (s * p + bias, the
     /// normal renormalised), as Nokia's M3G implementation (reference)
@@ -136,7 +135,34 @@ public:
     /// The runs of group(count), ascending, `start` counted from 0.
     std::span<const InfluenceRun> runs(int count) const noexcept;
 
+    // ---- Compact space (built with weights only) ----
+    // The loose vertices of every group with at least one influence, in a
+    // space of their own where they are sorted by influence set (bones,
+    // then weight bit patterns, slot by slot), so that vertices with the
+    // same slots that are not neighbours in the mesh (exporters interleave
+    // the vertices of different bones) become runs there and are blended
+    // once; the rest stay loose but consecutive, which the list kernel takes
+    // in packed blocks. Slots keep the table's order. Built with the groups,
+    // when the table changes (never per frame). A caller gathers the inputs
+    // into compact order when they change (compactOrder()[i] is the mesh
+    // vertex at compact position i), skins the compact arrays and writes
+    // each output back to its mesh vertex (scatterXyz): the output order
+    // stays the mesh's.
+
+    /// Mesh vertex of each compact position (each loose vertex once).
+    std::span<const std::uint32_t> compactOrder() const noexcept { return compactOrder_; }
+    /// The compact influence table, stride as the table's:
+    /// compactOrder().size() * stride slots.
+    std::span<const std::int32_t> compactBones() const noexcept { return compactBones_; }
+    std::span<const float> compactWeights() const noexcept { return compactWeights_; }
+    /// Runs and loose positions (compact indices) of the compact vertices
+    /// with `count` influences; runs ascending, `start` counted from 0.
+    std::span<const InfluenceRun> compactRuns(int count) const noexcept;
+    std::span<const std::uint32_t> compactLoose(int count) const noexcept;
+
 private:
+    void buildCompact(std::span<const std::int32_t> boneIndices, std::span<const float> boneWeights, bool weights);
+
     std::vector<std::uint32_t> vertices_;
     std::vector<std::size_t> offsets_;  // group c = [offsets_[c], offsets_[c + 1])
     std::vector<std::size_t> cursor_;   // build() scratch
@@ -144,6 +170,22 @@ private:
     std::vector<std::size_t> looseOffsets_;
     std::vector<InfluenceRun> runs_;
     std::vector<std::size_t> runOffsets_;
+    std::vector<std::uint32_t> compactOrder_;
+    std::vector<std::int32_t> compactBones_;
+    std::vector<float> compactWeights_;
+    std::vector<InfluenceRun> compactRuns_;
+    std::vector<std::uint32_t> compactLoose_;
+    std::vector<std::size_t> compactRunOffsets_, compactLooseOffsets_;
+    std::vector<std::uint32_t> cursorScratch_;
 };
+
+/// out[order[i]] = in[i] for xyz triples (packed, 3 floats a vertex):
+/// compact outputs written back to their mesh vertices. Three floats
+/// written per vertex, none other.
+void scatterXyz(std::span<const std::uint32_t> order, const float* in, float* out) noexcept;
+/// The same for two pairs of arrays in one pass (positions and normals:
+/// each index read once).
+void scatterXyz(std::span<const std::uint32_t> order, const float* in, float* out, const float* in2,
+                float* out2) noexcept;
 
 }  // namespace m3g::skin

@@ -1,0 +1,310 @@
+// The partition's compact space (InfluencePartition::compactOrder, the
+// compact runs and loose positions, skin::scatterXyz): loose vertices sorted
+// by influence set when the table is built, so that what they share is
+// blended once, and written back to their own mesh vertices (the output
+// order stays the mesh's). Checked against the double reference and the
+// list path on every ISA, with 1-4 influences, at any chunking.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "SkinRandomMesh.h"
+#include "SkinReference.h"
+
+using namespace m3g::skin;
+
+namespace {
+
+const Isa kIsas[] = {Isa::Scalar, Isa::Sse2, Isa::Avx2};
+
+/// What MeshDeformer does: each group's mesh-order runs (and group 0's
+/// vertices) in place, the compact space's runs and loose positions in
+/// compact arrays, then every compact output written to its mesh vertex
+/// (scatterXyz). Outputs start as a sentinel.
+void skinCompact(const m3gtest::RandomMesh& m, const std::vector<PaletteEntry>& pal, Isa isa,
+                 std::vector<float>& pos, std::vector<float>& nrm, ThreadPool* pool = nullptr,
+                 std::size_t grain = 4096) {
+    InfluencePartition part;
+    part.build(m.table.bones(), m.table.weights(), m.n, m.vertices);
+    pos.assign(m.vertices * 3, -999.0f);
+    nrm.assign(m.vertices * 3, -999.0f);
+    const auto order = part.compactOrder();
+    std::vector<float> cp(order.size() * 3), cn(order.size() * 3), cop(order.size() * 3, -777.0f),
+        con(order.size() * 3, -777.0f);
+    for (std::size_t i = 0; i < order.size(); ++i)
+        for (std::size_t e = 0; e < 3; ++e) {
+            cp[i * 3 + e] = m.raw[order[i] * 3 + e];
+            cn[i * 3 + e] = m.normals[order[i] * 3 + e];
+        }
+    for (int c = 0; c <= part.maxInfluences(); ++c) {
+        SkinningJob job = m3gtest::meshJob(m, c == 0 ? part.loose(0) : std::span<const std::uint32_t>(), c, pal, isa,
+                                           pos, nrm);
+        job.runs = part.runs(c);
+        ASSERT_TRUE(pool ? job.runParallel(*pool, grain) : job.run()) << "group " << c;
+        if (c == 0) continue;
+        SkinningJob cj = job;
+        cj.vertices = part.compactLoose(c);
+        cj.runs = part.compactRuns(c);
+        cj.vertexCount = order.size();
+        cj.boneIndices = part.compactBones();
+        cj.boneWeights = part.compactWeights();
+        cj.inPositions = cp;
+        cj.inNormals = cn;
+        cj.outPositions = cop;
+        cj.outNormals = con;
+        ASSERT_TRUE(pool ? cj.runParallel(*pool, grain) : cj.run()) << "compact group " << c;
+    }
+    scatterXyz(order, cop.data(), pos.data(), con.data(), nrm.data());
+}
+
+/// A mesh (stride 4) whose vertices come in stretches sharing bones, some
+/// with the same weights, some each with their own (a blend along a limb),
+/// some with every slot its own, with 1..4 influences, shuffled so that
+/// the sharing vertices are not consecutive; with zeroWeights, about one
+/// stretch in ten has all its weights 0 (zero total weight).
+struct ShuffledMesh {
+    int n = 4;
+    std::size_t vertices;
+    std::vector<std::int32_t> bones;
+    std::vector<float> weights;
+    ShuffledMesh(std::uint32_t seed, std::size_t count, int bonesInPalette, bool zeroWeights) : vertices(count) {
+        std::mt19937 rng(seed);
+        std::uniform_int_distribution<int> kind(0, 2), influences(1, 4), len(1, 30), bone(0, bonesInPalette - 1);
+        std::uniform_real_distribution<float> w(0.0f, 1.0f);
+        struct Slots {
+            std::int32_t b[4];
+            float w[4];
+        };
+        std::vector<Slots> slots;
+        while (slots.size() < count) {
+            const int k = influences(rng), stretch = len(rng), how = kind(rng);
+            Slots s{{-1, -1, -1, -1}, {0, 0, 0, 0}};
+            auto randomBones = [&](Slots& t) {
+                std::set<int> used;
+                for (int i = 0; i < k; ++i) {
+                    int b;
+                    do b = bone(rng);
+                    while (!used.insert(b).second);
+                    t.b[i] = b;
+                }
+            };
+            auto randomWeights = [&](Slots& t) {
+                float sum = 0;
+                for (int i = 0; i < k; ++i) sum += t.w[i] = w(rng) + 0.01f;
+                for (int i = 0; i < k; ++i) t.w[i] /= sum;
+                if (zeroWeights && w(rng) < 0.1f)
+                    for (int i = 0; i < k; ++i) t.w[i] = 0.0f;  // zero total weight
+            };
+            randomBones(s);
+            randomWeights(s);
+            for (int v = 0; v < stretch && slots.size() < count; ++v) {
+                if (how >= 1) randomWeights(s);  // same bones, own weights
+                if (how == 2) randomBones(s);    // everything its own
+                slots.push_back(s);
+            }
+        }
+        std::shuffle(slots.begin(), slots.end(), rng);
+        for (const Slots& s : slots)
+            for (int i = 0; i < 4; ++i) {
+                bones.push_back(s.b[i]);
+                weights.push_back(s.w[i]);
+            }
+    }
+};
+
+}  // namespace
+
+// The compact space holds exactly the loose vertices with influences, each
+// with its own slots; its runs share every slot; runs and loose positions
+// cover it once; sorting brings vertices with the same set together.
+TEST(InfluencePartition, CompactSpaceSortsLooseVerticesByInfluenceSet) {
+    for (std::uint32_t seed : {1u, 2u, 3u}) {
+        ShuffledMesh m(seed, 3001, 23, false);
+        InfluencePartition part;
+        part.build(m.bones, m.weights, m.n, m.vertices);
+        const auto order = part.compactOrder();
+        std::vector<std::uint32_t> loose;
+        for (int c = 1; c <= part.maxInfluences(); ++c)
+            loose.insert(loose.end(), part.loose(c).begin(), part.loose(c).end());
+        std::vector<std::uint32_t> sortedOrder(order.begin(), order.end());
+        std::sort(sortedOrder.begin(), sortedOrder.end());
+        std::sort(loose.begin(), loose.end());
+        ASSERT_EQ(loose, sortedOrder) << "seed " << seed;
+        ASSERT_EQ(part.compactBones().size(), order.size() * 4);
+        ASSERT_EQ(part.compactWeights().size(), order.size() * 4);
+        for (std::size_t i = 0; i < order.size(); ++i) {
+            // The vertex's own slots, as the table has them.
+            ASSERT_EQ(0, std::memcmp(&part.compactBones()[i * 4], &m.bones[order[i] * 4], 16)) << "compact " << i;
+            ASSERT_EQ(0, std::memcmp(&part.compactWeights()[i * 4], &m.weights[order[i] * 4], 16)) << "compact " << i;
+        }
+        // Loose vertices of a group never share every slot with kMinRun - 1
+        // others (those are runs).
+        std::vector<int> covered(order.size(), 0);
+        std::size_t inRuns = 0;
+        for (int c = 1; c <= part.maxInfluences(); ++c) {
+            std::uint32_t start = 0;
+            for (const InfluenceRun& r : part.compactRuns(c)) {
+                ASSERT_EQ(r.start, start);
+                ASSERT_GE(r.vertexCount, InfluencePartition::kMinRun);
+                start += r.vertexCount;
+                inRuns += r.vertexCount;
+                for (std::uint32_t v = r.firstVertex; v < r.firstVertex + r.vertexCount; ++v) {
+                    ++covered[v];
+                    ASSERT_EQ(0, std::memcmp(&part.compactBones()[v * 4], &part.compactBones()[r.firstVertex * 4], 16));
+                    ASSERT_EQ(0, std::memcmp(&part.compactWeights()[v * 4],
+                                             &part.compactWeights()[r.firstVertex * 4], 16));
+                }
+            }
+            for (std::uint32_t v : part.compactLoose(c)) ++covered[v];
+        }
+        for (std::size_t i = 0; i < covered.size(); ++i) ASSERT_EQ(1, covered[i]) << "compact " << i;
+        EXPECT_GT(inRuns, 0u) << "seed " << seed;
+    }
+    // Without weights there is no compact space.
+    ShuffledMesh m(9, 100, 5, false);
+    InfluencePartition part;
+    part.build(m.bones, m.n, m.vertices);
+    EXPECT_TRUE(part.compactOrder().empty());
+    EXPECT_TRUE(part.compactRuns(1).empty());
+    EXPECT_TRUE(part.compactLoose(1).empty());
+}
+
+// Random meshes with 1-4 influences whose vertices share bones and weights
+// without being neighbours: skinned through the compact space, every mesh
+// vertex gets its own result (the reference's, at its own index: the
+// output order is the mesh's), the same as the plain vertex-list path on
+// that ISA, bit-identical for any grain and thread count.
+TEST(SkinningJob, CompactSpaceKeepsTheMeshOrderAndAgreesWithTheReference) {
+    for (std::uint32_t seed : {11u, 12u, 13u, 14u}) {
+        // Records over random ranges: overlapping ranges give 1-4 influences.
+        m3gtest::RandomMesh m(seed, 1501, 17, 60);
+        // And vertices that share their influences without being neighbours.
+        for (int i = 0; i < 40; ++i) {
+            const int first = static_cast<int>((seed * 131 + static_cast<std::uint32_t>(i) * 37) % 1400);
+            m.records.push_back({i % 17, 3, first, 1});
+            m.table.add(i % 17, 3, first, 1);
+            m.records.push_back({i % 17, 3, first + 50, 1});
+            m.table.add(i % 17, 3, first + 50, 1);
+        }
+        const auto pal = m3gtest::paletteOf(m);
+        const std::vector<double> mesh = m.meshSpace();
+        const std::vector<double> a(m.boneToMesh.begin(), m.boneToMesh.end()), r(m.atRest.begin(), m.atRest.end());
+        const std::vector<double> nd(m.normals.begin(), m.normals.end());
+        const auto ref = m3gtest::referenceSkin(m.records, m.n, a, r, m.vertices, mesh, nd);
+        InfluencePartition part;
+        part.build(m.table.bones(), m.table.weights(), m.n, m.vertices);
+        std::size_t compactRuns = 0;
+        for (int c = 1; c <= part.maxInfluences(); ++c) compactRuns += part.compactRuns(c).size();
+        EXPECT_GT(compactRuns, 0u) << "seed " << seed;
+        for (Isa isa : kIsas) {
+            if (!isaSupported(isa)) continue;
+            const std::string what = std::string(isaName(isa)) + ", seed " + std::to_string(seed);
+            std::vector<float> pos, nrm, listPos, listNrm;
+            skinCompact(m, pal, isa, pos, nrm);
+            m3gtest::skinAll(m, pal, isa, listPos, listNrm);
+            EXPECT_TRUE(m3gtest::closeXyz(pos, ref.positions)) << what << " positions";
+            EXPECT_TRUE(m3gtest::closeXyz(nrm, ref.normals)) << what << " normals";
+            for (std::size_t i = 0; i < pos.size(); ++i) {
+                ASSERT_NEAR(pos[i], listPos[i], 2e-5f * std::max(1.0f, std::abs(listPos[i]))) << what << " " << i;
+                ASSERT_NEAR(nrm[i], listNrm[i], 2e-6f) << what << " normal " << i;
+            }
+            for (int threads : {1, 2}) {
+                ThreadPool pool(threads);
+                for (std::size_t grain : {1u, 5u, 12u, 256u}) {
+                    std::vector<float> p2, n2;
+                    skinCompact(m, pal, isa, p2, n2, &pool, grain);
+                    EXPECT_EQ(0, std::memcmp(pos.data(), p2.data(), pos.size() * sizeof(float))) << what;
+                    EXPECT_EQ(0, std::memcmp(nrm.data(), n2.data(), nrm.size() * sizeof(float))) << what;
+                }
+            }
+        }
+    }
+}
+
+// Shuffled meshes with 1-4 influences, some vertices of zero total weight
+// (they go to the origin, their normal stays zero), positions and normals
+// at random: through the compact space on every ISA, each mesh vertex gets
+// what the scalar path gives it as a plain vertex list.
+TEST(SkinningJob, CompactSpaceAgreesWithTheScalarListPathIncludingZeroWeights) {
+    std::mt19937 rng(31);
+    std::vector<std::array<float, 16>> bonesToMesh;
+    for (int b = 0; b < 23; ++b) bonesToMesh.push_back(m3gtest::randomAffine(rng));
+    const std::vector<PaletteEntry> pal = m3gtest::paletteAtRestIdentity(bonesToMesh);
+    std::uniform_real_distribution<float> u(-5.0f, 5.0f);
+    for (std::uint32_t seed : {4u, 5u, 6u}) {
+        ShuffledMesh m(seed, 2000 + seed, 23, true);
+        std::vector<float> in(m.vertices * 3), nin(m.vertices * 3);
+        for (auto& x : in) x = u(rng);
+        for (auto& x : nin) x = u(rng);
+        InfluencePartition part;
+        part.build(m.bones, m.weights, m.n, m.vertices);
+        // The reference: every group as one vertex list, scalar.
+        std::vector<float> ref(m.vertices * 3, -999.0f), nref(m.vertices * 3, -999.0f);
+        for (int c = 0; c <= part.maxInfluences(); ++c) {
+            SkinningJob job = m3gtest::arraysJob(part.group(c), {}, m.vertices, c, m.n, m.bones, m.weights, pal, in,
+                                                 nin, ref, nref, Isa::Scalar);
+            ASSERT_TRUE(job.run());
+        }
+        const auto order = part.compactOrder();
+        ASSERT_EQ(order.size(), m.vertices - [&] {
+            std::size_t r = 0;
+            for (int c = 1; c <= part.maxInfluences(); ++c)
+                for (const InfluenceRun& run : part.runs(c)) r += run.vertexCount;
+            return r;
+        }());
+        std::vector<float> cp(order.size() * 3), cn(order.size() * 3);
+        for (std::size_t i = 0; i < order.size(); ++i)
+            for (std::size_t e = 0; e < 3; ++e) {
+                cp[i * 3 + e] = in[order[i] * 3 + e];
+                cn[i * 3 + e] = nin[order[i] * 3 + e];
+            }
+        for (Isa isa : kIsas) {
+            if (!isaSupported(isa)) continue;
+            const std::string what = std::string(isaName(isa)) + ", seed " + std::to_string(seed);
+            std::vector<float> pos(m.vertices * 3, -999.0f), nrm(m.vertices * 3, -999.0f);
+            std::vector<float> cop(order.size() * 3, -777.0f), con(order.size() * 3, -777.0f);
+            for (int c = 1; c <= part.maxInfluences(); ++c) {
+                SkinningJob job = m3gtest::arraysJob({}, part.runs(c), m.vertices, c, m.n, m.bones, m.weights, pal,
+                                                     in, nin, pos, nrm, isa);
+                ASSERT_TRUE(job.run()) << what;
+                SkinningJob cj = m3gtest::arraysJob(part.compactLoose(c), part.compactRuns(c), order.size(), c, m.n,
+                                                    std::vector<std::int32_t>(part.compactBones().begin(),
+                                                                              part.compactBones().end()),
+                                                    std::vector<float>(part.compactWeights().begin(),
+                                                                       part.compactWeights().end()),
+                                                    pal, cp, cn, cop, con, isa);
+                // arraysJob keeps spans of its arguments: point at the partition's own arrays.
+                cj.boneIndices = part.compactBones();
+                cj.boneWeights = part.compactWeights();
+                ASSERT_TRUE(cj.run()) << what;
+            }
+            scatterXyz(order, cop.data(), pos.data());
+            scatterXyz(order, con.data(), nrm.data());
+            for (std::size_t i = 0; i < pos.size(); ++i) {
+                ASSERT_NEAR(pos[i], ref[i], 2e-5f * std::max(1.0f, std::abs(ref[i]))) << what << " " << i;
+                ASSERT_NEAR(nrm[i], nref[i], 2e-6f) << what << " normal " << i;
+            }
+        }
+    }
+}
+
+// scatterXyz writes three floats per listed vertex and nothing else.
+TEST(SkinningJob, ScatterXyzWritesOnlyTheListedTriples) {
+    const std::vector<std::uint32_t> order{4, 0, 2};
+    const std::vector<float> in{1, 2, 3, 4, 5, 6, 7, 8, 9};
+    std::vector<float> out(16, -1.0f);
+    scatterXyz(order, in.data(), out.data());
+    const std::vector<float> expect{4, 5, 6, -1, -1, -1, 7, 8, 9, -1, -1, -1, 1, 2, 3, -1};
+    EXPECT_EQ(out, expect);
+    std::vector<float> a(16, -1.0f), b(16, -1.0f);
+    const std::vector<float> in2{10, 20, 30, 40, 50, 60, 70, 80, 90};
+    scatterXyz(order, in.data(), a.data(), in2.data(), b.data());
+    EXPECT_EQ(a, expect);
+    const std::vector<float> expect2{40, 50, 60, -1, -1, -1, 70, 80, 90, -1, -1, -1, 10, 20, 30, -1};
+    EXPECT_EQ(b, expect2);
+}
