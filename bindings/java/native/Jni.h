@@ -74,10 +74,11 @@ T* arg(JNIEnv* env, jobject peer) {
     return static_cast<T*>(o);
 }
 
-/// The receiver of an instance method (never null).
+/// The receiver of an instance method (never null). Not remembered: a call
+/// gives its receiver no new holder (its arguments may get one: itself).
 template <class T>
 T* self(JNIEnv* env, jobject peer) {
-    return arg<T>(env, peer);
+    return static_cast<T*>(objectOf(env, peer));
 }
 
 /// The Java peer of `object` (a local reference): the existing one while it

@@ -1,5 +1,6 @@
 #include "Peers.h"
 
+#include <atomic>
 #include <mutex>
 #include <string>
 #include <unordered_map>
@@ -18,6 +19,7 @@ JavaVM* gVm = nullptr;
 std::mutex gPeersMutex;
 std::unordered_map<const m3g::Object3D*, jweak> gPeers;  // object -> its (latest) peer
 std::vector<m3g::Object3D*> gReleases;                    // handles of collected peers
+std::atomic<bool> gReleasesPending{false};                // gReleases non-empty: most calls need no lock
 std::unordered_map<std::string, std::pair<jclass, jmethodID>> gClasses;  // "Mesh" -> class, (J)V constructor
 
 thread_local std::vector<m3g::Object3D*> tArguments;
@@ -90,9 +92,11 @@ jobject peer(JNIEnv* env, m3g::Object3D* object) {
 }
 
 void drainReleases(JNIEnv* env) noexcept {
+    if (!gReleasesPending.load(std::memory_order_acquire)) return;
     std::vector<m3g::Object3D*> releases;
     {
         std::lock_guard lock(gPeersMutex);
+        gReleasesPending.store(false, std::memory_order_relaxed);
         if (gReleases.empty()) return;
         releases.swap(gReleases);
         // A table entry goes with its peer, unless a newer peer replaced it.
@@ -140,6 +144,7 @@ M3G_JNI(void, Object3D, attach)(JNIEnv* env, jobject self) {
 M3G_JNI(void, Object3D, release)(JNIEnv*, jclass, jlong handle) {
     std::lock_guard lock(gPeersMutex);
     gReleases.push_back(reinterpret_cast<m3g::Object3D*>(static_cast<std::intptr_t>(handle)));
+    gReleasesPending.store(true, std::memory_order_release);
 }
 
 M3G_JNI(jlong, Object3D, nativePeerCount)(JNIEnv* env, jclass) {
