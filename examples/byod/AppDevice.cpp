@@ -218,6 +218,63 @@ void AppDevice::transition(VkCommandBuffer cmd, const AppImage& image, VkImageLa
     vkCmdPipelineBarrier2(cmd, &dep);
 }
 
+VkImageView AppDevice::createView(const AppImage& image) {
+    const bool isDepth = image.format == VK_FORMAT_D16_UNORM || image.format == VK_FORMAT_D32_SFLOAT;
+    VkImageViewCreateInfo vi{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    vi.image = image.image;
+    vi.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    vi.format = image.format;
+    vi.subresourceRange = {static_cast<VkImageAspectFlags>(isDepth ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT),
+                           0, 1, 0, 1};
+    VkImageView view = VK_NULL_HANDLE;
+    check(vkCreateImageView(device, &vi, nullptr, &view), "vkCreateImageView");
+    return view;
+}
+
+void AppDevice::drawPanelFrame(const AppImage& color, const AppImage* depth, const std::uint8_t (&clear)[4],
+                               const std::uint8_t (&panel)[4], std::uint32_t panelX, VkSemaphore signal) {
+    auto unorm = [](const std::uint8_t (&c)[4]) {
+        return VkClearColorValue{{c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f, c[3] / 255.0f}};
+    };
+    VkImageView colorView = createView(color);
+    VkImageView depthView = depth ? createView(*depth) : VK_NULL_HANDLE;
+    submit(
+        [&](VkCommandBuffer cmd) {
+            transition(cmd, color, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+            if (depth) transition(cmd, *depth, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+            VkRenderingAttachmentInfo c{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+            c.imageView = colorView;
+            c.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+            c.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+            c.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+            c.clearValue.color = unorm(clear);
+            VkRenderingAttachmentInfo d{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+            d.imageView = depthView;
+            d.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+            d.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+            d.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+            d.clearValue.depthStencil = {1.0f, 0};
+            VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
+            ri.renderArea = {{0, 0}, {color.width, color.height}};
+            ri.layerCount = 1;
+            ri.colorAttachmentCount = 1;
+            ri.pColorAttachments = &c;
+            ri.pDepthAttachment = depth ? &d : nullptr;
+            vkCmdBeginRendering(cmd, &ri);
+            VkClearAttachment panels[2]{};
+            panels[0].aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
+            panels[0].clearValue.color = unorm(panel);
+            panels[1].aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
+            panels[1].clearValue.depthStencil = {0.0f, 0};
+            const VkClearRect rect{{{static_cast<std::int32_t>(panelX), 0}, {color.width - panelX, color.height}}, 0, 1};
+            vkCmdClearAttachments(cmd, depth ? 2 : 1, panels, 1, &rect);
+            vkCmdEndRendering(cmd);
+        },
+        VK_NULL_HANDLE, 0, signal);
+    vkDestroyImageView(device, colorView, nullptr);
+    if (depthView) vkDestroyImageView(device, depthView, nullptr);
+}
+
 std::vector<std::uint8_t> AppDevice::read(const AppImage& image, VkImageLayout layout, VkSemaphore wait) {
     const VkDeviceSize bytes = VkDeviceSize{image.width} * image.height * 4;
     VkBufferCreateInfo bi{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};

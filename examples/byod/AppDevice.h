@@ -60,6 +60,14 @@ public:
                 VkPipelineStageFlags waitStages = 0, VkSemaphore signal = VK_NULL_HANDLE);
     /// A layout transition of every texel of `image` (colour or depth aspect).
     static void transition(VkCommandBuffer cmd, const AppImage& image, VkImageLayout from, VkImageLayout to);
+    /// A 2D view of every texel of `image` (colour or depth aspect by format).
+    VkImageView createView(const AppImage& image);
+    /// The application's own frame: `color` cleared to `clear` (RGBA bytes)
+    /// and `depth` (if any) to far, then a panel of colour `panel` at depth 0
+    /// (nearer than anything) over the columns from `panelX` on; both left in
+    /// their attachment layouts; the submission signals `signal`.
+    void drawPanelFrame(const AppImage& color, const AppImage* depth, const std::uint8_t (&clear)[4],
+                        const std::uint8_t (&panel)[4], std::uint32_t panelX, VkSemaphore signal);
     /// The texels of a 4-byte colour image in `layout` (TRANSFER_SRC usage),
     /// rows top to bottom, as the format stores them; waits for `wait` first.
     std::vector<std::uint8_t> read(const AppImage& image, VkImageLayout layout, VkSemaphore wait = VK_NULL_HANDLE);

@@ -25,50 +25,10 @@ namespace {
 
 constexpr std::uint32_t kWidth = 320, kHeight = 240;
 
-// The application's own drawing: a clear, then a near panel over the right third.
-void drawAppFrame(VkCommandBuffer cmd, const byod::AppImage& color, const byod::AppImage& depth,
-                  VkImageView colorView, VkImageView depthView) {
-    byod::AppDevice::transition(cmd, color, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
-    byod::AppDevice::transition(cmd, depth, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
-    VkRenderingAttachmentInfo c{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    c.imageView = colorView;
-    c.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    c.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    c.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    c.clearValue.color = {{0x20 / 255.0f, 0x40 / 255.0f, 0x80 / 255.0f, 1.0f}};
-    VkRenderingAttachmentInfo d{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    d.imageView = depthView;
-    d.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-    d.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    d.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    d.clearValue.depthStencil = {1.0f, 0};
-    VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    ri.renderArea = {{0, 0}, {kWidth, kHeight}};
-    ri.layerCount = 1;
-    ri.colorAttachmentCount = 1;
-    ri.pColorAttachments = &c;
-    ri.pDepthAttachment = &d;
-    vkCmdBeginRendering(cmd, &ri);
-    VkClearAttachment panel[2]{};
-    panel[0].aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
-    panel[0].clearValue.color = {{0xE0 / 255.0f, 0x90 / 255.0f, 0x20 / 255.0f, 1.0f}};
-    panel[1].aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
-    panel[1].clearValue.depthStencil = {0.0f, 0};
-    const VkClearRect rect{{{static_cast<std::int32_t>(kWidth * 2 / 3), 0}, {kWidth - kWidth * 2 / 3, kHeight}}, 0, 1};
-    vkCmdClearAttachments(cmd, 2, panel, 1, &rect);
-    vkCmdEndRendering(cmd);
-}
-
-VkImageView makeView(const byod::AppDevice& app, const byod::AppImage& image, VkImageAspectFlags aspect) {
-    VkImageViewCreateInfo vi{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    vi.image = image.image;
-    vi.viewType = VK_IMAGE_VIEW_TYPE_2D;
-    vi.format = image.format;
-    vi.subresourceRange = {aspect, 0, 1, 0, 1};
-    VkImageView view = VK_NULL_HANDLE;
-    if (vkCreateImageView(app.device, &vi, nullptr, &view) != VK_SUCCESS) throw std::runtime_error("vkCreateImageView");
-    return view;
-}
+// The application's own frame: a blue clear, an orange panel nearer than
+// anything over the right third.
+constexpr std::uint8_t kClear[4] = {0x20, 0x40, 0x80, 0xFF};
+constexpr std::uint8_t kPanel[4] = {0xE0, 0x90, 0x20, 0xFF};
 
 }  // namespace
 
@@ -95,11 +55,8 @@ int main(int argc, char** argv) {
                                                        VK_IMAGE_USAGE_TRANSFER_DST_BIT);
             byod::AppImage depth = app.createImage(kWidth, kHeight, m3g::vk::ImageTarget::depthFormat(),
                                                    VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
-            VkImageView colorView = makeView(app, color, VK_IMAGE_ASPECT_COLOR_BIT);
-            VkImageView depthView = makeView(app, depth, VK_IMAGE_ASPECT_DEPTH_BIT);
             VkSemaphore appDrawn = app.createSemaphore(), sceneDrawn = app.createSemaphore();
-            app.submit([&](VkCommandBuffer cmd) { drawAppFrame(cmd, color, depth, colorView, depthView); },
-                       VK_NULL_HANDLE, 0, appDrawn);
+            app.drawPanelFrame(color, &depth, kClear, kPanel, kWidth * 2 / 3, appDrawn);
 
             // The M3G scene, composited over the application's frame: its
             // Background clears neither colour nor depth (as a MIDlet draws
@@ -148,8 +105,6 @@ int main(int argc, char** argv) {
             m3g::vk::releaseDevice();
             app.destroy(appDrawn);
             app.destroy(sceneDrawn);
-            vkDestroyImageView(app.device, colorView, nullptr);
-            vkDestroyImageView(app.device, depthView, nullptr);
             app.destroy(color);
             app.destroy(depth);
         }

@@ -322,9 +322,9 @@ SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<flo
         const float* before = keys.value(keys.prev(j));
         const float* after = keys.value(keys.next(j1));
         for (int c = 0; c < comps; ++c) {
-            const double t0 = sOut * (double(p1[c]) - double(before[c]));
-            const double t1 = sIn * (double(after[c]) - double(p0[c]));
-            out[c] = float(h00 * p0[c] + h01 * p1[c] + h10 * t0 + h11 * t1);
+            const double tanOut = sOut * (double(p1[c]) - double(before[c]));
+            const double tanIn = sIn * (double(after[c]) - double(p0[c]));
+            out[c] = float(h00 * p0[c] + h01 * p1[c] + h10 * tanOut + h11 * tanIn);
         }
         break;
     }

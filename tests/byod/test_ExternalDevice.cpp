@@ -65,63 +65,10 @@ m3g::vk::ExternalDevice external() {
     return d;
 }
 
-VkImageView makeView(const byod::AppImage& image, VkImageAspectFlags aspect) {
-    VkImageViewCreateInfo vi{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    vi.image = image.image;
-    vi.viewType = VK_IMAGE_VIEW_TYPE_2D;
-    vi.format = image.format;
-    vi.subresourceRange = {aspect, 0, 1, 0, 1};
-    VkImageView view = VK_NULL_HANDLE;
-    EXPECT_EQ(vkCreateImageView(gApp->device, &vi, nullptr, &view), VK_SUCCESS);
-    return view;
-}
-
-VkClearColorValue unorm(const std::uint8_t (&c)[4]) {
-    return {{c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f, c[3] / 255.0f}};
-}
-
-// The application's frame: kClear everywhere and far depth, then the panel
-// at depth 0 (nearest) over the right third; left in attachment layouts.
+// The application's frame (AppDevice::drawPanelFrame): kClear with far
+// depth, the panel at depth 0 over the right third.
 void drawAppFrame(const byod::AppImage& color, const byod::AppImage* depth, VkSemaphore signal) {
-    VkImageView colorView = makeView(color, VK_IMAGE_ASPECT_COLOR_BIT);
-    VkImageView depthView = depth ? makeView(*depth, VK_IMAGE_ASPECT_DEPTH_BIT) : VK_NULL_HANDLE;
-    gApp->submit(
-        [&](VkCommandBuffer cmd) {
-            byod::AppDevice::transition(cmd, color, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
-            if (depth)
-                byod::AppDevice::transition(cmd, *depth, VK_IMAGE_LAYOUT_UNDEFINED,
-                                            VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
-            VkRenderingAttachmentInfo c{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-            c.imageView = colorView;
-            c.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-            c.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-            c.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-            c.clearValue.color = unorm(kClear);
-            VkRenderingAttachmentInfo d{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-            d.imageView = depthView;
-            d.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-            d.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-            d.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-            d.clearValue.depthStencil = {1.0f, 0};
-            VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
-            ri.renderArea = {{0, 0}, {kW, kH}};
-            ri.layerCount = 1;
-            ri.colorAttachmentCount = 1;
-            ri.pColorAttachments = &c;
-            ri.pDepthAttachment = depth ? &d : nullptr;
-            vkCmdBeginRendering(cmd, &ri);
-            VkClearAttachment panel[2]{};
-            panel[0].aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
-            panel[0].clearValue.color = unorm(kPanel);
-            panel[1].aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
-            panel[1].clearValue.depthStencil = {0.0f, 0};
-            const VkClearRect rect{{{static_cast<std::int32_t>(kPanelX), 0}, {kW - kPanelX, kH}}, 0, 1};
-            vkCmdClearAttachments(cmd, depth ? 2 : 1, panel, 1, &rect);
-            vkCmdEndRendering(cmd);
-        },
-        VK_NULL_HANDLE, 0, signal);
-    vkDestroyImageView(gApp->device, colorView, nullptr);
-    if (depthView) vkDestroyImageView(gApp->device, depthView, nullptr);
+    gApp->drawPanelFrame(color, depth, kClear, kPanel, kPanelX, signal);
 }
 
 // The sample scene (lit textured cube, ground, blended sprite, fog) with its
