@@ -2,7 +2,7 @@
 #include <m3g/Camera.h>
 
 #include "Jni.h"
-#include "SceneHelpers.h"
+#include "Arrays.h"
 #include "Transforms.h"
 
 using namespace m3gjni;
@@ -36,7 +36,7 @@ M3G_JNI(jint, Camera, getProjection__Ljavax_microedition_m3g_Transform_2)(JNIEnv
 }
 M3G_JNI(jint, Camera, getProjection___3F)(JNIEnv* env, jobject thiz, jfloatArray params) {
     return guard(env, [&]() -> jint {
-        FloatsOutOrNull out(env, params, "Camera.getProjection");
+        SpanOut<jfloatArray> out(env, params, kWholeArray, SpanOut<jfloatArray>::Start::Values);
         const int type = self<Camera>(env, thiz)->getProjection(out.span());
         out.commit();
         return type;

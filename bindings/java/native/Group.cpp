@@ -4,7 +4,7 @@
 #include <m3g/RayIntersection.h>
 
 #include "Jni.h"
-#include "SceneHelpers.h"
+#include "RayIntersections.h"
 
 using namespace m3gjni;
 using m3g::Group;

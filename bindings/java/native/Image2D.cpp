@@ -7,7 +7,7 @@
 
 #include <m3g/Image2D.h>
 
-#include "GeometryArrays.h"
+#include "Arrays.h"
 #include "Jni.h"
 
 using namespace m3gjni;

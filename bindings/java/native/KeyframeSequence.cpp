@@ -2,7 +2,7 @@
 #include <m3g/KeyframeSequence.h>
 
 #include "Jni.h"
-#include "SceneHelpers.h"
+#include "Arrays.h"
 
 using namespace m3gjni;
 using m3g::KeyframeSequence;
@@ -15,14 +15,14 @@ M3G_JNI(jlong, KeyframeSequence, create)(JNIEnv* env, jclass, jint numKeyframes,
 // The value is copied; null reaches m3g-vk as null (its NullPointerException).
 M3G_JNI(void, KeyframeSequence, setKeyframe)(JNIEnv* env, jobject thiz, jint index, jint time, jfloatArray value) {
     guard(env, [&] {
-        const FloatsInOrNull in(env, value, "KeyframeSequence.setKeyframe");
+        SpanIn<jfloatArray> in(env, value);
         self<KeyframeSequence>(env, thiz)->setKeyframe(index, time, in.span());
     });
 }
 // Null is allowed: only the time is returned then.
 M3G_JNI(jint, KeyframeSequence, getKeyframe)(JNIEnv* env, jobject thiz, jint index, jfloatArray value) {
     return guard(env, [&]() -> jint {
-        FloatsOutOrNull out(env, value, "KeyframeSequence.getKeyframe");
+        SpanOut<jfloatArray> out(env, value, kWholeArray, SpanOut<jfloatArray>::Start::Values);
         const int time = self<KeyframeSequence>(env, thiz)->getKeyframe(index, out.span());
         out.commit();
         return time;

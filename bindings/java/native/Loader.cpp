@@ -35,8 +35,7 @@ M3G_JNI(jobjectArray, Loader, loadFile)(JNIEnv* env, jclass, jstring path) {
 
 M3G_JNI(jobjectArray, Loader, loadBytes)(JNIEnv* env, jclass, jbyteArray data, jint offset) {
     return guard(env, [&]() -> jobjectArray {
-        const std::vector<std::int8_t> bytes = copyIn(env, data, "Loader.load");
-        const auto* begin = reinterpret_cast<const std::uint8_t*>(bytes.data());
-        return peers(env, m3g::Loader::load(std::span<const std::uint8_t>(begin, bytes.size()), offset));
+        SpanIn<jbyteArray> bytes = requiredIn(env, data, "Loader.load");
+        return peers(env, m3g::Loader::load(bytes.as<std::uint8_t>(), offset));
     });
 }

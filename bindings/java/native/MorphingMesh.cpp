@@ -4,7 +4,7 @@
 #include <m3g/MorphingMesh.h>
 #include <m3g/VertexBuffer.h>
 
-#include "GeometryArrays.h"
+#include "ObjectArrays.h"
 #include "Jni.h"
 
 using namespace m3gjni;

@@ -10,7 +10,8 @@
 #include <m3g/RayIntersection.h>
 
 #include "Jni.h"
-#include "SceneHelpers.h"
+#include "Arrays.h"
+#include "RayIntersections.h"
 
 using namespace m3gjni;
 using m3g::RayIntersection;

@@ -7,7 +7,7 @@
 #include <m3g/Transform.h>
 #include <m3g/VertexBuffer.h>
 
-#include "GeometryArrays.h"
+#include "ObjectArrays.h"
 #include "Jni.h"
 #include "Transforms.h"
 

@@ -73,13 +73,13 @@ M3G_JNI(void, Transform, set__Ljavax_microedition_m3g_Transform_2)(JNIEnv* env, 
 }
 
 M3G_JNI(void, Transform, set___3F)(JNIEnv* env, jobject thiz, jfloatArray matrix) {
-    update(env, thiz, [&](m3g::Transform& t) { t.set(floatsIn(env, matrix, "Transform.set")); });
+    update(env, thiz, [&](m3g::Transform& t) { t.set(requiredIn(env, matrix, "Transform.set").span()); });
 }
 
 M3G_JNI(void, Transform, get)(JNIEnv* env, jobject thiz, jfloatArray matrix) {
     guard(env, [&] {
         const m3g::Transform t = transformOf(env, thiz, "Transform");
-        FloatsOut out(env, matrix, "Transform.get");
+        FloatsInOut out(env, matrix, "Transform.get");
         t.get(out.span());
         out.commit();
     });
@@ -120,7 +120,7 @@ M3G_JNI(void, Transform, transform__Ljavax_microedition_m3g_VertexArray_2_3FZ)(J
                                                                               jfloatArray out, jboolean w) {
     guard(env, [&] {
         const m3g::Transform t = transformOf(env, thiz, "Transform");
-        FloatsOut result(env, out, "Transform.transform");
+        FloatsInOut result(env, out, "Transform.transform");
         t.transform(arg<m3g::VertexArray>(env, in), result.span(), w == JNI_TRUE);
         result.commit();
     });
@@ -129,7 +129,7 @@ M3G_JNI(void, Transform, transform__Ljavax_microedition_m3g_VertexArray_2_3FZ)(J
 M3G_JNI(void, Transform, transform___3F)(JNIEnv* env, jobject thiz, jfloatArray vectors) {
     guard(env, [&] {
         const m3g::Transform t = transformOf(env, thiz, "Transform");
-        FloatsOut v(env, vectors, "Transform.transform");
+        FloatsInOut v(env, vectors, "Transform.transform");
         t.transform(v.span());
         v.commit();
     });

@@ -2,7 +2,7 @@
 #include <m3g/Transformable.h>
 
 #include "Jni.h"
-#include "SceneHelpers.h"
+#include "Arrays.h"
 #include "Transforms.h"
 
 using namespace m3gjni;

@@ -4,7 +4,7 @@
 #include <m3g/IndexBuffer.h>
 #include <m3g/TriangleStripArray.h>
 
-#include "GeometryArrays.h"
+#include "Arrays.h"
 #include "Jni.h"
 
 using namespace m3gjni;

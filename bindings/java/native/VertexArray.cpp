@@ -1,7 +1,7 @@
 // javax.microedition.m3g.VertexArray's native methods (JSR-184 1.1, VertexArray).
 #include <m3g/VertexArray.h>
 
-#include "GeometryArrays.h"
+#include "Arrays.h"
 #include "Jni.h"
 
 using namespace m3gjni;

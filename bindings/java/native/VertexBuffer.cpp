@@ -2,7 +2,7 @@
 #include <m3g/VertexArray.h>
 #include <m3g/VertexBuffer.h>
 
-#include "GeometryArrays.h"
+#include "Arrays.h"
 #include "Jni.h"
 
 using namespace m3gjni;
