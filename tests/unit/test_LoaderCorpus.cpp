@@ -71,7 +71,7 @@ TEST(LoaderCorpus, EveryM3GFileLoadsOrFailsAsDocumented) {
         if (fileName == "id-only.hex") {
             EXPECT_THROW(Loader::load(path.string()), IOException) << rel;
             ++c.rejected;
-            std::cout << "[ rejected ] " << rel << " (identifier only, as REFERENCE.md requires)\n";
+            std::cout << "[ rejected ] " << rel << " (identifier only: no header section, so IOException)\n";
             continue;
         }
         if (fileName == "boy.m3g") {

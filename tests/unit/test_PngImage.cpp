@@ -1,5 +1,5 @@
-// PngImage: PNG -> Image2D format and pixels per the corpus REFERENCE.md
-// colour-type mapping; robustness against damaged PNGs.
+// PngImage: PNG -> Image2D format and pixels per the colour-type mapping of
+// docs/scene-setup.md (Image files); robustness against damaged PNGs.
 #include <gtest/gtest.h>
 
 #include <m3g/Image2D.h>

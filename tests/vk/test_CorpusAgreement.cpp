@@ -1,9 +1,10 @@
-// Agreement with Nokia's renders of ../shared/corpus (REFERENCE.md), as a
-// measured figure: every file of the manifest at every reference time is
-// rendered at 320x240 and compared (pixels whose largest channel difference
-// exceeds 8, and PSNR). The table is printed; the test fails only when fewer
-// images agree than the floor set from what the renderer reaches, or when a
-// file that Nokia rendered no longer renders at all.
+// Agreement with Nokia's renders of the shared corpus (scenes set up as
+// docs/scene-setup.md describes), as a measured figure: every file of the
+// manifest at every reference time is rendered at 320x240 and compared
+// (pixels whose largest channel difference exceeds 8, and PSNR). The table
+// is printed; the test fails only when fewer images agree than the floor set
+// from what the renderer reaches, or when a file that Nokia rendered no
+// longer renders at all.
 #include "VkTestSupport.h"
 
 #include <algorithm>
@@ -21,7 +22,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // Share of pixels off by more than 8, and PSNR, that count as agreement
-// (REFERENCE.md: what Nokia's engine and an independent implementation reach).
+// (docs/rendering.md: what Nokia's engine and an independent implementation reach).
 constexpr double kAgreeShare = 0.01;
 constexpr double kAgreePsnr = 35.0;
 // The floor: how many reference images must agree. Set from the measured

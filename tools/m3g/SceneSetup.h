@@ -1,5 +1,5 @@
-// Turning a loaded file into a renderable World exactly as the reference
-// renders were made (../shared/corpus/REFERENCE.md): the first World, or a
+// Turning a loaded file into a renderable World by the project's scene
+// set-up rules (docs/scene-setup.md): the first World, or a
 // new one holding the root nodes; auto-framing when there is no active
 // camera; the camera fix-up when the active camera is outside the World.
 // Shared by `m3g render`, the viewer and the agreement test.
@@ -37,7 +37,7 @@ std::vector<m3g::Camera*> camerasInFileOrder(const m3g::LoadResult& loaded);
 /// Cameras, std::invalid_argument when the Camera sits in another tree.
 void useCamera(PreparedScene& scene, const m3g::LoadResult& loaded, int index);
 
-/// Bounding box rule of REFERENCE.md step 2 (stored transforms, rest poses):
+/// The auto-framing bounds (docs/scene-setup.md; stored transforms, rest poses):
 /// centre and radius; no vertex gives (0,0,0) and 1.
 void sceneBounds(m3g::World& world, std::array<float, 3>& center, float& radius);
 

@@ -1,5 +1,5 @@
 // m3g render: load, animate, optionally align, render the World to images
-// (with the auto-framing and camera fix-up of ../shared/corpus/REFERENCE.md):
+// (with the auto-framing and camera fix-up of docs/scene-setup.md):
 // one image, an animation sequence, a turntable, a comparison with a
 // reference image, or a batch over a folder or a J2ME .jar. Each failure
 // has its exit code (CliErrors.h): a missing input 3, an unwritable image 4,

@@ -19,8 +19,8 @@ import org.m3gvk.testing.Json;
 import org.m3gvk.testing.SceneSetup;
 
 /**
- * The shared corpus through the Java API, against Nokia's renders
- * (../shared/corpus, REFERENCE.md): each file loaded with Loader.load,
+ * The shared corpus through the Java API, against Nokia's renders (scenes
+ * set up as docs/scene-setup.md describes): each file loaded with Loader.load,
  * animated to each reference time and rendered into a 320x240 BufferedImage,
  * compared as the C++ agreement test compares (tests/vk/test_CorpusAgreement.cpp:
  * at most 1% of pixels off by more than 8 in a channel, PSNR at least 35 dB,
