@@ -25,7 +25,8 @@ namespace {
 
 struct UiTexture {
     Image image;
-    VkDescriptorSet set = VK_NULL_HANDLE;
+    VkDescriptorSet set = VK_NULL_HANDLE;         // bilinear
+    VkDescriptorSet nearestSet = VK_NULL_HANDLE;  // nearest-neighbour, made on first use
     std::uint32_t revision = 0;
 };
 
@@ -39,6 +40,7 @@ struct ImGuiOverlay::Impl {
     VkFormat pipelineFormat = VK_FORMAT_UNDEFINED;
     VkDescriptorPool pool = VK_NULL_HANDLE;
     VkSampler sampler = VK_NULL_HANDLE;
+    VkSampler nearestSampler = VK_NULL_HANDLE;
     UiTexture font;
     std::unordered_map<std::uint64_t, UiTexture> images;  // by Image2D object id
     Buffer vertices, indices;
@@ -47,6 +49,8 @@ struct ImGuiOverlay::Impl {
     ~Impl();
     void buildPipeline(VkFormat format);
     UiTexture upload(std::uint32_t width, std::uint32_t height, const std::uint8_t* rgba, UiTexture texture);
+    VkDescriptorSet allocateSet();
+    void writeSet(VkDescriptorSet set, VkSampler with, VkImageView view);
     void ensureBuffers(std::size_t vertexBytes, std::size_t indexBytes);
 };
 
@@ -72,6 +76,8 @@ ImGuiOverlay::Impl::Impl() {
     si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     si.maxLod = 0.0f;
     check(vkCreateSampler(device, &si, nullptr, &sampler), "vkCreateSampler (UI)");
+    si.magFilter = si.minFilter = VK_FILTER_NEAREST;
+    check(vkCreateSampler(device, &si, nullptr, &nearestSampler), "vkCreateSampler (UI, nearest)");
 }
 
 ImGuiOverlay::Impl::~Impl() {
@@ -82,6 +88,7 @@ ImGuiOverlay::Impl::~Impl() {
     ctx->destroy(vertices);
     ctx->destroy(indices);
     vkDestroySampler(device, sampler, nullptr);
+    vkDestroySampler(device, nearestSampler, nullptr);
     vkDestroyDescriptorPool(device, pool, nullptr);
     if (pipeline) vkDestroyPipeline(device, pipeline, nullptr);
     vkDestroyPipelineLayout(device, layout, nullptr);
@@ -184,21 +191,31 @@ UiTexture ImGuiOverlay::Impl::upload(std::uint32_t width, std::uint32_t height, 
                      VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
     });
     ctx->destroy(staging);
-    if (!texture.set) {
-        VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-        ai.descriptorPool = pool;
-        ai.descriptorSetCount = 1;
-        ai.pSetLayouts = &setLayout;
-        check(vkAllocateDescriptorSets(ctx->device(), &ai, &texture.set), "vkAllocateDescriptorSets (UI)");
-    }
-    VkDescriptorImageInfo ii{sampler, texture.image.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    if (!texture.set) texture.set = allocateSet();
+    writeSet(texture.set, sampler, texture.image.view);
+    // The image may be new (another size): the nearest set follows it.
+    if (texture.nearestSet) writeSet(texture.nearestSet, nearestSampler, texture.image.view);
+    return texture;
+}
+
+VkDescriptorSet ImGuiOverlay::Impl::allocateSet() {
+    VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    ai.descriptorPool = pool;
+    ai.descriptorSetCount = 1;
+    ai.pSetLayouts = &setLayout;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    check(vkAllocateDescriptorSets(ctx->device(), &ai, &set), "vkAllocateDescriptorSets (UI)");
+    return set;
+}
+
+void ImGuiOverlay::Impl::writeSet(VkDescriptorSet set, VkSampler with, VkImageView view) {
+    VkDescriptorImageInfo ii{with, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    w.dstSet = texture.set;
+    w.dstSet = set;
     w.descriptorCount = 1;
     w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     w.pImageInfo = &ii;
     vkUpdateDescriptorSets(ctx->device(), 1, &w, 0, nullptr);
-    return texture;
 }
 
 void ImGuiOverlay::Impl::ensureBuffers(std::size_t vertexBytes, std::size_t indexBytes) {
@@ -230,7 +247,7 @@ void ImGuiOverlay::uploadFonts() {
 
 ImGuiOverlay::~ImGuiOverlay() = default;
 
-void* ImGuiOverlay::texture(const Image2D& image) {
+void* ImGuiOverlay::texture(const Image2D& image, bool nearest) {
     UiTexture& t = impl_->images[image.getObjectId()];
     if (!t.image.image || t.revision != image.getRevision()) {
         std::vector<std::uint8_t> rgba;
@@ -239,7 +256,12 @@ void* ImGuiOverlay::texture(const Image2D& image) {
                           rgba.data(), t);
         t.revision = image.getRevision();
     }
-    return t.set;
+    if (!nearest) return t.set;
+    if (!t.nearestSet) {
+        t.nearestSet = impl_->allocateSet();
+        impl_->writeSet(t.nearestSet, impl_->nearestSampler, t.image.view);
+    }
+    return t.nearestSet;
 }
 
 void ImGuiOverlay::record(void* cmdPointer, Swapchain& swapchain) {

@@ -93,3 +93,15 @@ TEST(ViewerLayout, WindowPixelsMapIntoTheView) {
     EXPECT_FALSE(l.view.contains(l.view.x + l.view.w, l.view.y));
     EXPECT_FALSE(l.view.contains(5, 5));  // the menu bar / the Scene panel
 }
+
+TEST(ViewerLayout, PixelsScaleWindowUnitsToTheFramebuffer) {
+    // A HiDPI window: 2 framebuffer pixels a unit. Edges are rounded, so
+    // rectangles side by side stay side by side.
+    const PixelRect p = pixels(Rect{244, 19, 422, 581}, 2.0f, 2.0f);
+    EXPECT_EQ(p.x, 488);
+    EXPECT_EQ(p.y, 38);
+    EXPECT_EQ(p.w, 844);
+    EXPECT_EQ(p.h, 1162);
+    const PixelRect a = pixels(Rect{0, 0, 10.3f, 5}, 1.5f, 1.0f), b = pixels(Rect{10.3f, 0, 10, 5}, 1.5f, 1.0f);
+    EXPECT_EQ(a.x + a.w, b.x);
+}

@@ -10,7 +10,7 @@
 
 #include <m3g/Exception.h>
 
-#include "FormatSniffer.h"
+#include "InputFile.h"
 
 namespace m3gcli {
 
@@ -19,13 +19,6 @@ namespace fs = std::filesystem;
 namespace {
 
 unzFile handle(void* p) { return static_cast<unzFile>(p); }
-
-/// `suffix` in lower case.
-bool endsWithNoCase(const std::string& s, std::string_view suffix) {
-    if (s.size() < suffix.size()) return false;
-    return std::equal(suffix.begin(), suffix.end(), s.end() - static_cast<std::ptrdiff_t>(suffix.size()),
-                      [](char lower, char c) { return std::tolower(static_cast<unsigned char>(c)) == lower; });
-}
 
 /// An entry name that stays inside a folder it is extracted to: relative,
 /// no ".." component, no empty component (zip-slip protection).
@@ -90,12 +83,12 @@ JarArchive::~JarArchive() {
 std::vector<std::string> JarArchive::m3gEntries(std::vector<std::string>* others) const {
     std::vector<std::string> out;
     for (const Entry& e : entries_) {
-        bool m3g = endsWithNoCase(e.name, ".m3g");
+        bool m3g = hasM3gName(e.name);
         if (!m3g && e.size > 0) {
             try {
                 // The whole entry: J2ME archives are small, and an entry
                 // over the size limit is no model a handset loaded.
-                m3g = m3g::detail::sniffFormat(read(e.name)) == m3g::detail::InputFormat::M3G;
+                m3g = sniffBytes(read(e.name)).m3g;
             } catch (const std::exception&) {
                 m3g = false;  // unreadable (encrypted, too large, corrupt): not listed as M3G
             }

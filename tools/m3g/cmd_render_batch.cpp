@@ -17,7 +17,6 @@
 #include <m3g/vk/Vulkan.h>
 
 #include "CliErrors.h"
-#include "FormatSniffer.h"
 #include "InputFile.h"
 #include "JarArchive.h"
 #include "RenderRun.h"
@@ -34,26 +33,11 @@ struct BatchItem {
     std::function<m3g::LoadResult(const m3g::LoaderOptions&)> load;
 };
 
-bool isM3gName(const std::string& name) {
-    if (name.size() < 4) return false;
-    std::string ext = name.substr(name.size() - 4);
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext == ".m3g";
-}
-
 /// Where a model's images go under OUTDIR: "level.m3g" -> "level", but
 /// "level.res" -> "level.res", so that level.m3g and level.res beside it
 /// do not write the same PNG.
 fs::path outputStem(const fs::path& relative) {
-    return isM3gName(relative.filename().string()) ? fs::path(relative).replace_extension() : relative;
-}
-
-/// What the first bytes of `file` are (m3g::detail::sniffFormat).
-m3g::detail::InputFormat sniffFile(const fs::path& file) {
-    std::uint8_t head[32] = {};  // enough to tell M3G 2.0 (FormatSniffer.cpp)
-    std::ifstream in(file, std::ios::binary);
-    in.read(reinterpret_cast<char*>(head), sizeof head);
-    return m3g::detail::sniffFormat(std::span<const std::uint8_t>(head, static_cast<std::size_t>(in.gcount())));
+    return hasM3gName(relative.filename().string()) ? fs::path(relative).replace_extension() : relative;
 }
 
 /// One line redrawn in place on a terminal: [#####-----] 12/40 name.
@@ -87,11 +71,11 @@ std::vector<BatchItem> folderItems(const fs::path& dir, std::vector<std::string>
     std::vector<fs::path> files;
     for (const auto& e : fs::recursive_directory_iterator(dir, fs::directory_options::skip_permission_denied)) {
         if (!e.is_regular_file()) continue;
-        const m3g::detail::InputFormat format = sniffFile(e.path());
-        if (format == m3g::detail::InputFormat::M3G || isM3gName(e.path().filename().string()))
+        const FileContent content = sniffFile(e.path());
+        if (listedAsM3g(content, e.path().filename().string()))
             files.push_back(e.path());
         else
-            skipped.push_back(fs::relative(e.path(), dir).string() + " (" + m3g::detail::describeFormat(format) + ")");
+            skipped.push_back(fs::relative(e.path(), dir).string() + " (" + content.what + ")");
     }
     std::sort(files.begin(), files.end());
     std::sort(skipped.begin(), skipped.end());

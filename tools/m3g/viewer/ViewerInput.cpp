@@ -3,11 +3,14 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
 #include "ImageIO.h"
+#include "InputFile.h"
 #include "JarArchive.h"
 
 namespace m3gview {
@@ -63,6 +66,7 @@ struct InputCallbacks {
             if (key == GLFW_KEY_Z) name = (mods & GLFW_MOD_SHIFT) ? "ctrl+shift+z" : "ctrl+z";
             else if (key == GLFW_KEY_Y) name = "ctrl+y";
             else if (key == GLFW_KEY_S && action == GLFW_PRESS) name = "ctrl+s";
+            else if (key == GLFW_KEY_O && action == GLFW_PRESS) name = "ctrl+o";
             if (!name.empty()) of(w)->key(name);
             return;
         }
@@ -106,10 +110,10 @@ std::optional<std::string> Input::takeDrop() {
 
 void updateLayout(ViewerState& state) {
     const Rect before = state.layout.view;
-    state.layout = computeLayout(state.fbWidth, state.fbHeight, state.menuHeight, state.showUi, state.layoutSizes);
+    state.layout = computeLayout(state.width, state.height, state.menuHeight, state.showUi, state.layoutSizes);
     const Rect& v = state.layout.view;
     if (state.scene && (v.w != before.w || v.h != before.h)) {
-        const PixelRect p = pixels(v);
+        const PixelRect p = state.viewPixels();
         state.scene->applyOrbit(p.w, p.h);
     }
 }
@@ -117,16 +121,17 @@ void updateLayout(ViewerState& state) {
 void Input::drag(bool pan, float dx, float dy) {
     if (!state_.scene) return;
     ViewerScene& scene = *state_.scene;
-    const PixelRect view = pixels(state_.layout.view);
+    const PixelRect view = state_.viewPixels();
     if (scene.cameraIndex() >= 0) scene.useCamera(-1);  // moving the view takes the orbit camera
-    if (pan) scene.orbit().pan(dx, dy, view.h);
+    // dx, dy are window units: the pan is relative to the view's height in the same units.
+    if (pan) scene.orbit().pan(dx, dy, pixels(state_.layout.view).h);
     else scene.orbit().orbit(dx, dy);
     scene.applyOrbit(view.w, view.h);
 }
 
 void Input::scroll(float steps) {
     if (!state_.scene) return;
-    const PixelRect view = pixels(state_.layout.view);
+    const PixelRect view = state_.viewPixels();
     if (state_.scene->cameraIndex() >= 0) state_.scene->useCamera(-1);
     state_.scene->orbit().zoom(steps);
     state_.scene->applyOrbit(view.w, view.h);
@@ -230,6 +235,14 @@ bool Input::key(const std::string& name) {
     else if (name == "ctrl+z") undo();
     else if (name == "ctrl+y" || name == "ctrl+shift+z") redo();
     else if (name == "ctrl+s") save("");
+    else if (name == "ctrl+o") {
+        try {
+            if (state_.showBrowser) state_.showBrowser = false;
+            else showBrowser(state_, state_.browser.isOpen() ? state_.browser.folder().string() : "");
+        } catch (const std::exception& e) {
+            state_.status = e.what();
+        }
+    }
     else if (name.size() == 1 && name[0] >= '0' && name[0] <= '9') {
         if (state_.scene) state_.scene->useCamera(name[0] - '1');  // 0: orbit, 1: the first camera
     } else return false;
@@ -237,6 +250,18 @@ bool Input::key(const std::string& name) {
 }
 
 namespace {
+
+/// Script output: appended to `file`, or stdout when it is empty.
+void report(const std::string& text, const std::string& file) {
+    if (file.empty()) {
+        std::fputs(text.c_str(), stdout);
+        std::fflush(stdout);
+        return;
+    }
+    std::ofstream out(file, std::ios::app);
+    out << text;
+    if (!out) throw std::runtime_error("cannot write " + file);
+}
 
 std::string rectText(const char* name, const Rect& r) {
     char buf[96];
@@ -276,7 +301,7 @@ int Input::apply(const ScriptCommand& c, const std::function<void()>& frame,
         else if (c.name == "key") {
             if (!key(c.args[0])) return fail("unknown key " + c.args[0]);
             if (state_.resetViewRequest && state_.scene) {
-                const PixelRect view = pixels(state_.layout.view);
+                const PixelRect view = state_.viewPixels();
                 state_.scene->resetView(view.w, view.h);
                 state_.scene->useCamera(-1);
                 state_.resetViewRequest = false;
@@ -350,7 +375,7 @@ int Input::apply(const ScriptCommand& c, const std::function<void()>& frame,
             else if (c.args[0] == "right-split1") s.rightSplit1 = v;
             else if (c.args[0] == "right-split2") s.rightSplit2 = v;
             else return fail("unknown splitter " + c.args[0]);
-            s = clampSizes(s, state_.fbWidth, state_.fbHeight);
+            s = clampSizes(s, state_.width, state_.height);
             updateLayout(state_);
         } else if (c.name == "layout") {
             const Layout& l = state_.layout;
@@ -359,6 +384,8 @@ int Input::apply(const ScriptCommand& c, const std::function<void()>& frame,
                 for (const auto& [name, r] : {std::pair{"scene", l.scene}, {"objects", l.objects}, {"properties", l.properties},
                                               {"animation", l.animation}, {"stats", l.stats}})
                     std::fprintf(stderr, "m3g: view: layout %s\n", rectText(name, r).c_str());
+            if (state_.inspector.wasDrawn)  // where the inspected image was drawn in the last frame
+                std::fprintf(stderr, "m3g: view: layout %s\n", rectText("inspector-image", state_.inspector.drawn).c_str());
         } else if (c.name == "expect-pixel") {
             const m3gcli::RgbaImage image = m3gcli::readPng(c.args[0]);
             const int x = std::stoi(c.args[1]), y = std::stoi(c.args[2]);
@@ -371,6 +398,76 @@ int Input::apply(const ScriptCommand& c, const std::function<void()>& frame,
                 if (std::abs(static_cast<int>(px[k]) - static_cast<int>((want >> (16 - 8 * k)) & 0xFF)) > 8)
                     return fail(c.args[0] + " (" + c.args[1] + ", " + c.args[2] + ") is " + got + ", not " + c.args[3]);
             std::fprintf(stderr, "m3g: view: %s (%d, %d) = %s\n", c.args[0].c_str(), x, y, got);
+        } else if (c.name == "browse") {
+            showBrowser(state_, c.args.empty() ? "" : c.args[0]);
+        } else if (c.name == "browse-list") {
+            if (!state_.browser.isOpen()) return fail("the file browser is not open (browse DIR)");
+            std::string text = "# " + state_.browser.folder().string() + "\n";
+            const auto& entries = state_.browser.entries();
+            for (std::size_t i = 0; i < entries.size(); ++i)
+                text += std::to_string(i) + " " + kindName(entries[i].kind) + " " + entries[i].name + "\n";
+            text += "# other files: " + std::to_string(state_.browser.otherFiles()) + "\n";
+            report(text, c.args.empty() ? "" : c.args[0]);
+        } else if (c.name == "browse-open") {
+            if (!state_.browser.isOpen()) return fail("the file browser is not open (browse DIR)");
+            const int n = std::stoi(c.args[0]);
+            if (n < 0 || n >= static_cast<int>(state_.browser.entries().size()))
+                return fail("no entry " + c.args[0] + " (the browser lists " +
+                            std::to_string(state_.browser.entries().size()) + ")");
+            const std::string file = state_.browser.activate(static_cast<std::size_t>(n));
+            if (!file.empty()) state_.openRequest = file;  // opened by the loop, as a click does
+        } else if (c.name == "browse-up") {
+            if (!state_.browser.isOpen()) return fail("the file browser is not open (browse DIR)");
+            state_.browser.up();
+        } else if (c.name == "browse-close") {
+            state_.showBrowser = false;
+        } else if (c.name == "recent") {
+            std::string text;
+            for (const auto& r : state_.recent) text += r + "\n";
+            report(text, c.args.empty() ? "" : c.args[0]);
+        } else if (c.name == "drop") {
+            drop(c.args[0]);
+        } else if (c.name == "expect-error") {
+            std::string want;
+            for (const auto& a : c.args) want += (want.empty() ? "" : " ") + a;
+            if (want == "none") {
+                if (!state_.error.empty()) return fail("error shown: " + state_.error);
+            } else if (state_.error.find(want) == std::string::npos) {
+                return fail("the error shown is '" + state_.error + "', without '" + want + "'");
+            }
+            std::fprintf(stderr, "m3g: view: error shown: %s\n", state_.error.empty() ? "none" : state_.error.c_str());
+        } else if (c.name == "expect-scene") {
+            const std::string name = state_.scene ? state_.scene->name() : "";
+            if (!name.ends_with(c.args[0])) return fail("the scene is '" + name + "'");
+        } else if (c.name == "inspect") {
+            if (!state_.scene) return fail("no scene");
+            const int n = std::stoi(c.args[0]);
+            const int count = static_cast<int>(state_.scene->images().size());
+            if (n < 0 || n >= count)
+                return fail("no image " + c.args[0] + " (the file has " + std::to_string(count) + ")");
+            int zoom = TextureInspector::kFit;
+            if (c.args.size() > 1 && c.args[1] != "fit") zoom = std::stoi(c.args[1]);
+            state_.inspector.open(n, zoom);
+        } else if (c.name == "inspect-close") {
+            state_.inspector.close();
+        } else if (c.name == "texel" || c.name == "hover") {
+            if (!state_.scene || !state_.inspector.isOpen()) return fail("no texture inspected (inspect N)");
+            const m3g::Image2D& image = *state_.scene->images().at(static_cast<std::size_t>(state_.inspector.index()));
+            std::optional<Texel> texel;
+            std::string prefix;
+            if (c.name == "texel") {
+                texel = texelAt(image, std::stoi(c.args[0]), std::stoi(c.args[1]));
+                if (!texel) return fail("(" + c.args[0] + ", " + c.args[1] + ") is outside the " +
+                                        std::to_string(image.getWidth()) + "x" + std::to_string(image.getHeight()) + " image");
+                prefix = "texel ";
+            } else {
+                if (!state_.inspector.wasDrawn) return fail("the inspector was not drawn yet (frames 1)");
+                if (const auto at = TextureInspector::texelUnder(number(0), number(1), state_.inspector.drawn,
+                                                                 image.getWidth(), image.getHeight()))
+                    texel = texelAt(image, at->first, at->second);
+                prefix = "hover " + c.args[0] + " " + c.args[1] + ": ";
+            }
+            report(prefix + (texel ? texel->describe() : "none") + "\n", c.args.size() > 2 ? c.args[2] : "");
         } else if (c.name == "expect-view") {
             const Rect want{number(0), number(1), number(2), number(3)};
             if (!(state_.layout.view == want))
@@ -412,7 +509,27 @@ std::unique_ptr<ViewerScene> openScene(const std::string& request, int width, in
         state.jarEntries = entries;  // the Messages panel lists them
         return nullptr;
     }
+    // The identifier decides, not the name (games name models .res, .mod, ...);
+    // anything else is said to be what its bytes are, before the Loader runs.
+    m3gcli::requireInputFile(request);
+    const m3gcli::FileContent content = m3gcli::sniffFile(request);
+    if (!content.image && !m3gcli::listedAsM3g(content, request))
+        throw std::runtime_error("not M3G data (it does not begin with the JSR-184 file identifier), nor a PNG, JPEG or "
+                                 ".jar: " + content.what);
     return std::make_unique<ViewerScene>(request, width, height, state.lenient);
+}
+
+void showBrowser(ViewerState& state, const std::string& folder) {
+    std::string at = folder;
+    if (at.empty() && state.scene) {
+        const std::string& name = state.scene->name();
+        at = std::filesystem::path(name.substr(0, name.find(".jar!") == std::string::npos ? name.size() : name.find(".jar!") + 4))
+                 .parent_path()
+                 .string();
+    }
+    if (at.empty()) at = ".";
+    state.browser.open(at);
+    state.showBrowser = true;
 }
 
 }  // namespace m3gview

@@ -19,8 +19,12 @@ public:
     /// Installs the GLFW callbacks (before ImGui's GLFW backend, which then
     /// forwards events here; events ImGui wants are ignored here).
     void install(GLFWwindow* window);
-    /// A file dropped on the window since the last call.
+    /// A file dropped on the window since the last call (the viewer opens
+    /// it as File > Open does: the same identifier check, a folder opens
+    /// the browser).
     std::optional<std::string> takeDrop();
+    /// What dropping `path` on the window does (the script's `drop`).
+    void drop(const std::string& path) { dropped_ = path; }
 
     // Actions (from the window or a script). Positions are window pixels,
     // mapped into the 3D view's rectangle (state.layout.view).
@@ -28,7 +32,7 @@ public:
     void scroll(float steps);
     void click(float x, float y);
     /// A shortcut by name (space r s w l h f1 left right 0..9, ctrl+z,
-    /// ctrl+y, ctrl+shift+z, ctrl+s); false if unknown.
+    /// ctrl+y, ctrl+shift+z, ctrl+s, ctrl+o); false if unknown.
     bool key(const std::string& name);
 
     // Edits (the status line says what happened; false on failure).
@@ -58,9 +62,15 @@ private:
 /// camera's aspect follows it.
 void updateLayout(ViewerState& state);
 
-/// Opens a file for the viewer: a .m3g or .png gives a scene; a .jar lists
-/// its .m3g entries in `state` and gives null; "game.jar!path/x.m3g" opens
-/// that entry. Throws on load errors.
+/// Opens a file for the viewer: M3G data (by its identifier bytes, or a
+/// file named .m3g), a PNG or JPEG gives a scene; a .jar lists its M3G
+/// entries in `state` and gives null; "game.jar!path/x.m3g" opens that
+/// entry. Throws on load errors, and for any other file a message saying
+/// what its bytes are (the Messages panel shows it).
 std::unique_ptr<ViewerScene> openScene(const std::string& request, int width, int height, ViewerState& state);
+
+/// Shows the file browser at `folder`; empty: the opened file's folder, else
+/// the current one. Throws std::runtime_error for a folder it cannot list.
+void showBrowser(ViewerState& state, const std::string& folder);
 
 }  // namespace m3gview

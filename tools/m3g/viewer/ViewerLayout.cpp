@@ -62,12 +62,13 @@ Layout computeLayout(int width, int height, float menuHeight, bool panels, const
     return l;
 }
 
-PixelRect pixels(const Rect& r) noexcept {
+PixelRect pixels(const Rect& r, float scaleX, float scaleY) noexcept {
+    // Edges rounded (not sizes), so that adjacent rectangles stay adjacent.
     PixelRect p;
-    p.x = static_cast<int>(std::lround(r.x));
-    p.y = static_cast<int>(std::lround(r.y));
-    p.w = std::max(1, static_cast<int>(std::lround(r.w)));
-    p.h = std::max(1, static_cast<int>(std::lround(r.h)));
+    p.x = static_cast<int>(std::lround(r.x * scaleX));
+    p.y = static_cast<int>(std::lround(r.y * scaleY));
+    p.w = std::max(1, static_cast<int>(std::lround((r.x + r.w) * scaleX)) - p.x);
+    p.h = std::max(1, static_cast<int>(std::lround((r.y + r.h) * scaleY)) - p.y);
     return p;
 }
 

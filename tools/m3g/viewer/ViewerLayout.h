@@ -27,7 +27,7 @@ struct Layout {
     static constexpr float kGap = 4.0f;         ///< splitter thickness
     static constexpr float kMinColumn = 120.0f;
     static constexpr float kMinView = 64.0f;
-    Rect view;                          ///< the 3D view (window pixels, top-left origin)
+    Rect view;                          ///< the 3D view (window units, top-left origin)
     Rect scene, objects;                ///< left column
     Rect properties, animation, stats;  ///< right column
     Rect leftSplitter, rightSplitter;   ///< vertical bars beside the view
@@ -55,6 +55,10 @@ inline void toView(const Rect& view, float x, float y, float& vx, float& vy) noe
 struct PixelRect {
     int x = 0, y = 0, w = 0, h = 0;
 };
-PixelRect pixels(const Rect& r) noexcept;
+/// `r` (window coordinates, the layout's unit) in whole framebuffer pixels,
+/// `scaleX` x `scaleY` framebuffer pixels per window unit: 1 on most
+/// screens, 2 on a HiDPI one whose window system scales windows (GLFW's
+/// cursor and ImGui use window units, the swapchain framebuffer pixels).
+PixelRect pixels(const Rect& r, float scaleX = 1.0f, float scaleY = 1.0f) noexcept;
 
 }  // namespace m3gview

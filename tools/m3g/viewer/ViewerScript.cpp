@@ -22,7 +22,11 @@ const std::map<std::string, Arity>& arity() {
         {"quit", {0, 0}},       {"select", {1, 1}},        {"edit", {3, kMany}},   {"expect", {3, kMany}},
         {"undo", {0, 0}},       {"redo", {0, 0}},          {"save", {1, 1}},       {"panels", {1, 1}},
         {"layout", {0, 0}},     {"expect-view", {4, 4}},   {"splitter", {2, 2}},
-        {"expect-pixel", {4, 4}}};
+        {"expect-pixel", {4, 4}},
+        {"browse", {0, 1}},     {"browse-list", {0, 1}},   {"browse-open", {1, 1}}, {"browse-up", {0, 0}},
+        {"browse-close", {0, 0}}, {"recent", {0, 1}},      {"drop", {1, 1}},       {"expect-error", {1, kMany}},
+        {"expect-scene", {1, 1}}, {"inspect", {1, 2}},     {"inspect-close", {0, 0}}, {"texel", {2, 3}},
+        {"hover", {2, 3}}};
     return a;
 }
 

@@ -24,6 +24,23 @@
 //                            right-split1, right-split2: shares 0..1)
 //   expect-pixel PNG X Y RRGGBB   fail unless pixel (X, Y) of a PNG (e.g. a
 //                            screenshot-ui) has that colour (+-8 per channel)
+//   browse [DIR]             open the file browser at DIR (default: the
+//                            opened file's folder, else the current one)
+//   browse-list [FILE]       its entries, "INDEX KIND NAME" a line, to FILE
+//                            (appended) or stdout
+//   browse-open N            activate entry N (a folder: enter; a file: open)
+//   browse-up | browse-close
+//   recent [FILE]            the recent files, one a line
+//   drop PATH                as if PATH were dropped on the window
+//   expect-error TEXT...|none  fail unless the Messages panel's error
+//                            contains TEXT (or there is none)
+//   expect-scene SUFFIX      fail unless the opened scene's name ends so
+//   inspect N [ZOOM]         the texture inspector on the Textures tab's
+//                            N-th image (0-based), ZOOM fit|1|2|4...
+//   inspect-close
+//   texel X Y [FILE]         print the inspected image's texel (X, Y)
+//   hover X Y [FILE]         print the texel under window point (X, Y) in
+//                            the inspector as last drawn (or "none")
 //   quit
 #pragma once
 

@@ -12,6 +12,8 @@
 #include <m3g/m3g.h>
 #include <m3g/vk/Vulkan.h>
 
+#include "FileBrowser.h"
+#include "TextureInspector.h"
 #include "ViewerEdit.h"
 #include "ViewerLayout.h"
 #include "ViewerScene.h"
@@ -40,11 +42,16 @@ struct ViewerState {
     std::vector<float> controllerWeights;  ///< saved weights of disabled controllers
 
     // Layout (ViewerLayout.h): sizes the splitters set, and the rectangles
-    // of this frame for a framebuffer fbWidth x fbHeight under a menu bar
-    // menuHeight pixels high (updateLayout in ViewerInput.h).
+    // of this frame for a window width x height (window units, those of
+    // GLFW's cursor and of ImGui) under a menu bar menuHeight high
+    // (updateLayout in ViewerInput.h). The swapchain has pixelScaleX x
+    // pixelScaleY framebuffer pixels per unit (2 on a scaled HiDPI screen).
     LayoutSizes layoutSizes;
     Layout layout;
-    int fbWidth = 0, fbHeight = 0;
+    int width = 0, height = 0;
+    float pixelScaleX = 1.0f, pixelScaleY = 1.0f;
+    /// The 3D view in framebuffer pixels (viewport, screenshots, aspect).
+    PixelRect viewPixels() const noexcept { return pixels(layout.view, pixelScaleX, pixelScaleY); }
     float menuHeight = 19.0f;  ///< ImGui's default frame height until the first frame says
 
     // Edits of the scene (undo/redo) and where Ctrl+S saves.
@@ -68,8 +75,17 @@ struct ViewerState {
     std::string jarPath;
     std::vector<std::string> jarEntries;
 
+    // The file browser (File > Browse, Ctrl+O) and the recently opened
+    // files (Settings::recent, most recent first).
+    FileBrowser browser;
+    bool showBrowser = false;
+    std::vector<std::string> recent;
+
+    // The texture inspector (Textures tab): images()[inspector.index()].
+    TextureInspector inspector;
+
     // Requests from the UI, handled by the loop.
-    std::string openRequest;      ///< a file (or "jar!entry") to open
+    std::string openRequest;      ///< a file (or "jar!entry") to open; a folder opens the browser there
     std::string screenshotPath;   ///< save the next frame's 3D view here
     bool resetViewRequest = false;
     bool saveRequest = false, undoRequest = false, redoRequest = false;  ///< menu items

@@ -14,23 +14,13 @@
 #include <m3g/vk/ImGuiOverlay.h>
 
 #include "ObjectDump.h"
+#include "ViewerInput.h"
 
 namespace m3gview {
 
 using namespace m3g;
 
 namespace {
-
-const char* formatName(int format) {
-    switch (format) {
-        case Image2D::ALPHA: return "ALPHA";
-        case Image2D::LUMINANCE: return "LUMINANCE";
-        case Image2D::LUMINANCE_ALPHA: return "LUMINANCE_ALPHA";
-        case Image2D::RGB: return "RGB";
-        case Image2D::RGBA: return "RGBA";
-        default: return "?";
-    }
-}
 
 const char* propertyName(int property) {
     static const char* names[] = {"ALPHA",          "AMBIENT_COLOR", "COLOR",         "CROP",         "DENSITY",
@@ -335,13 +325,22 @@ void animation(ViewerState& state) {
 void textures(ViewerState& state, vk::ImGuiOverlay& overlay) {
     const auto& images = state.scene->images();
     if (images.empty()) ImGui::TextDisabled("No Image2D in the file.");
-    for (const auto& image : images) {
-        ImGui::Text("Image2D %dx%d %s%s", image->getWidth(), image->getHeight(), formatName(image->getFormat()),
-                    image->isMutable() ? " (mutable)" : "");
-        const float scale = std::min(1.0f, 256.0f / static_cast<float>(std::max(image->getWidth(), image->getHeight())));
-        ImGui::Image(overlay.texture(*image), ImVec2(image->getWidth() * scale, image->getHeight() * scale));
-        if (ImGui::IsItemClicked()) state.selected = image.get();
+    for (std::size_t i = 0; i < images.size(); ++i) {
+        const Image2D& image = *images[i];
+        ImGui::PushID(static_cast<int>(i));
+        ImGui::Text("%zu: Image2D %dx%d %s%s%s", i, image.getWidth(), image.getHeight(), imageFormatName(image.getFormat()),
+                    image.isMutable() ? " (mutable)" : "", image.isPalettized() ? " (paletted)" : "");
+        ImGui::SameLine();
+        // The inspector: zoom and texel values (a click on the image too).
+        const bool inspect = ImGui::SmallButton("Inspect");
+        const float scale = std::min(1.0f, 256.0f / static_cast<float>(std::max(image.getWidth(), image.getHeight())));
+        ImGui::Image(overlay.texture(image), ImVec2(image.getWidth() * scale, image.getHeight() * scale));
+        if (inspect || ImGui::IsItemClicked()) {
+            state.selected = images[i].get();
+            state.inspector.open(static_cast<int>(i));
+        }
         ImGui::Separator();
+        ImGui::PopID();
     }
 }
 
@@ -453,6 +452,18 @@ void menu(ViewerState& state) {
     }
     if (!ImGui::BeginMainMenuBar()) return;
     if (ImGui::BeginMenu("File")) {
+        if (ImGui::MenuItem("Browse...", "Ctrl+O")) {
+            try {
+                showBrowser(state, state.browser.isOpen() ? state.browser.folder().string() : "");
+            } catch (const std::exception& e) {
+                state.status = e.what();
+            }
+        }
+        if (ImGui::BeginMenu("Recent", !state.recent.empty())) {
+            for (const auto& r : state.recent)
+                if (ImGui::MenuItem(r.c_str())) state.openRequest = r;
+            ImGui::EndMenu();
+        }
         ImGui::InputText("path", path, sizeof path);
         if (ImGui::MenuItem("Open")) state.openRequest = path;
         ImGui::Separator();
@@ -474,23 +485,169 @@ void menu(ViewerState& state) {
     ImGui::EndMainMenuBar();
 }
 
-// Load errors and a JAR's entries, over the top of the 3D view (they need an answer).
-void messages(ViewerState& state) {
-    if (state.error.empty() && state.jarEntries.empty() && (state.scene || state.warnings.empty())) return;
+// Load errors and a JAR's entries, over the top of the 3D view (they need
+// an answer). Returns where the browser and the inspector begin: below it.
+float messages(ViewerState& state) {
     const Rect& v = state.layout.view;
+    if (state.error.empty() && state.jarEntries.empty() && (state.scene || state.warnings.empty())) return v.y + 8.0f;
+    const float maxWidth = std::max(v.w - 16.0f, 64.0f);
     ImGui::SetNextWindowPos(ImVec2(v.x + 8.0f, v.y + 8.0f), ImGuiCond_Always);
-    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(std::max(v.w - 16.0f, 64.0f), std::max(v.h - 16.0f, 64.0f)));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(maxWidth, std::max(v.h * 0.5f, 64.0f)));
     ImGui::Begin("Messages", nullptr,
                  ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
-    if (!state.error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", state.error.c_str());
+    // Wrapped at the view's width (an auto-sized window has no width of its own to wrap at).
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + maxWidth - 2.0f * ImGui::GetStyle().WindowPadding.x);
+    if (!state.error.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.4f, 0.4f, 1));
+        ImGui::TextUnformatted(state.error.c_str());
+        ImGui::PopStyleColor();
+    }
     if (!state.scene)
-        for (const auto& w : state.warnings) ImGui::TextWrapped("%s", w.c_str());
+        for (const auto& w : state.warnings) ImGui::TextUnformatted(w.c_str());
+    ImGui::PopTextWrapPos();
     if (!state.jarEntries.empty()) {
         ImGui::Text("%s: pick a model", state.jarPath.c_str());
         for (const auto& e : state.jarEntries)
             if (ImGui::Selectable(e.c_str())) state.openRequest = state.jarPath + "!" + e;
     }
+    const float bottom = ImGui::GetWindowPos().y + ImGui::GetWindowHeight() + 4.0f;
     ImGui::End();
+    return bottom;
+}
+
+// Places a window over the 3D view from `top` down, 8 pixels in (the
+// browser, the inspector).
+void overView(const ViewerState& state, float top) {
+    const Rect& v = state.layout.view;
+    ImGui::SetNextWindowPos(ImVec2(v.x + 8.0f, top), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(std::max(v.w - 16.0f, 64.0f), std::max(v.y + v.h - 8.0f - top, 64.0f)), ImGuiCond_Always);
+}
+
+constexpr ImGuiWindowFlags kOverViewFlags =
+    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
+
+std::string sizeText(std::uint64_t bytes) {
+    char buf[32];
+    if (bytes < 10 * 1024) std::snprintf(buf, sizeof buf, "%llu B", static_cast<unsigned long long>(bytes));
+    else if (bytes < 10 * 1024 * 1024) std::snprintf(buf, sizeof buf, "%llu KiB", static_cast<unsigned long long>(bytes >> 10));
+    else std::snprintf(buf, sizeof buf, "%llu MiB", static_cast<unsigned long long>(bytes >> 20));
+    return buf;
+}
+
+// The file browser: recent files, then the folder's sub-folders, M3G files
+// (by their identifier bytes) and .jar files; a click enters or opens.
+void browserWindow(ViewerState& state, float top) {
+    if (!state.showBrowser || !state.browser.isOpen()) return;
+    FileBrowser& browser = state.browser;
+    overView(state, top);
+    bool open = true;
+    if (ImGui::Begin("Open a file (Ctrl+O)", &open, kOverViewFlags)) {
+        try {
+            if (ImGui::Button("Up")) browser.up();
+            ImGui::SameLine();
+            if (ImGui::Button("Refresh")) browser.refresh();
+        } catch (const std::exception& e) {
+            state.status = e.what();
+        }
+        ImGui::SameLine();
+        ImGui::TextUnformatted(browser.folder().string().c_str());
+        if (!state.recent.empty() && ImGui::CollapsingHeader("Recent files", ImGuiTreeNodeFlags_DefaultOpen)) {
+            for (std::size_t i = 0; i < state.recent.size(); ++i) {
+                ImGui::PushID(static_cast<int>(i));
+                if (ImGui::Selectable(state.recent[i].c_str())) state.openRequest = state.recent[i];
+                ImGui::PopID();
+            }
+        }
+        ImGui::Separator();
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("M3G files by their identifier bytes, whatever their names; %d other file(s) not shown",
+                           browser.otherFiles());
+        ImGui::PopStyleColor();
+        ImGui::BeginChild("##entries");
+        const auto& entries = browser.entries();
+        for (std::size_t i = 0; i < entries.size(); ++i) {
+            const BrowserEntry& e = entries[i];
+            const char* tag = e.kind == BrowserEntry::Kind::M3G   ? "[m3g]"
+                              : e.kind == BrowserEntry::Kind::Jar ? "[jar]"
+                                                                  : "[dir]";
+            std::string text = std::string(tag) + " " + e.name;
+            if (e.kind == BrowserEntry::Kind::M3G || e.kind == BrowserEntry::Kind::Jar) text += "  (" + sizeText(e.size) + ")";
+            ImGui::PushID(static_cast<int>(i));
+            const bool clicked = ImGui::Selectable(text.c_str());
+            ImGui::PopID();
+            if (!clicked) continue;
+            try {
+                const std::string file = browser.activate(i);
+                if (!file.empty()) state.openRequest = file;
+            } catch (const std::exception& ex) {
+                state.status = ex.what();
+            }
+            break;  // the listing may have changed
+        }
+        ImGui::EndChild();
+    }
+    ImGui::End();
+    if (!open) state.showBrowser = false;
+}
+
+// The texture inspector: one Image2D magnified nearest-neighbour, its
+// format, and the texel under the cursor as the image stores it.
+void inspectorWindow(ViewerState& state, vk::ImGuiOverlay& overlay, float top) {
+    TextureInspector& in = state.inspector;
+    in.wasDrawn = false;
+    if (!in.isOpen() || !state.scene) return;
+    const auto& images = state.scene->images();
+    if (in.index() >= static_cast<int>(images.size())) {
+        in.close();
+        return;
+    }
+    const Image2D& image = *images[static_cast<std::size_t>(in.index())];
+    const int w = image.getWidth(), h = image.getHeight();
+    overView(state, top);
+    bool open = true;
+    if (ImGui::Begin("Texture inspector", &open, kOverViewFlags)) {
+        std::string palette = "not paletted";
+        if (image.isPalettized())
+            palette = "paletted (" + std::to_string(image.palette().size() / static_cast<std::size_t>(image.bytesPerPixel())) +
+                      " entries)";
+        ImGui::Text("%s: %d x %d %s, %s, %s", state.scene->numbering().label(image).c_str(), w, h,
+                    imageFormatName(image.getFormat()), image.isMutable() ? "mutable" : "immutable", palette.c_str());
+        // The zoom buttons act on the area of the last frame (the child below).
+        const Rect area = in.lastArea;
+        const float lineH = ImGui::GetTextLineHeightWithSpacing();
+        struct Zoom {
+            const char* label;
+            int zoom;
+        };
+        for (const Zoom z : {Zoom{"Fit", TextureInspector::kFit}, {"1:1", 1}, {"2x", 2}, {"4x", 4}, {"8x", 8}, {"16x", 16}}) {
+            if (ImGui::RadioButton(z.label, in.zoom() == z.zoom)) in.setZoom(z.zoom);
+            ImGui::SameLine();
+        }
+        if (ImGui::Button("-")) in.zoomOut(w, h, area);
+        ImGui::SameLine();
+        if (ImGui::Button("+")) in.zoomIn(w, h, area);
+        ImGui::SameLine();
+        ImGui::Text("%.2f pixels a texel", static_cast<double>(in.scale(w, h, area)));
+        std::optional<Texel> hovered;
+        ImGui::BeginChild("##texels", ImVec2(0, -lineH), true, ImGuiWindowFlags_HorizontalScrollbar);
+        const ImVec2 origin = ImGui::GetCursorScreenPos(), room = ImGui::GetContentRegionAvail();
+        in.lastArea = Rect{origin.x, origin.y, std::max(1.0f, room.x), std::max(1.0f, room.y)};
+        const Rect place = in.placement(w, h, in.lastArea);
+        ImGui::SetCursorScreenPos(ImVec2(place.x, place.y));
+        ImGui::Image(overlay.texture(image, true), ImVec2(place.w, place.h));
+        const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+        in.drawn = Rect{lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
+        in.wasDrawn = true;
+        if (ImGui::IsItemHovered()) {
+            const ImVec2 m = ImGui::GetIO().MousePos;
+            if (const auto at = TextureInspector::texelUnder(m.x, m.y, in.drawn, w, h)) hovered = texelAt(image, at->first, at->second);
+        }
+        ImGui::EndChild();
+        if (hovered) ImGui::Text("texel %s", hovered->describe().c_str());
+        else ImGui::TextDisabled("texel: move the cursor over the image");
+    }
+    ImGui::End();
+    if (!open) in.close();
 }
 
 }  // namespace
@@ -514,9 +671,11 @@ void drawUi(ViewerState& state, vk::ImGuiOverlay& overlay) {
         splitter("##split-left-rows", l.leftRowSplitter, false, s.leftSplit, 1.0f / colH);
         splitter("##split-right-rows1", l.rightRowSplitter1, false, s.rightSplit1, 1.0f / colH);
         splitter("##split-right-rows2", l.rightRowSplitter2, false, s.rightSplit2, 1.0f / colH);
-        s = clampSizes(s, state.fbWidth, state.fbHeight);
+        s = clampSizes(s, state.width, state.height);
     }
-    messages(state);
+    const float top = messages(state);
+    inspectorWindow(state, overlay, top);
+    browserWindow(state, top);
     // A widget's edit is one undo step once the widget is let go.
     if (pending.property && !ImGui::IsAnyItemActive()) commitPending(state);
 }

@@ -73,10 +73,13 @@ ViewArgs finish(const ViewFlags& f) {
     r.headlight = !f.noHeadlight;
     if (!r.screenshot.empty()) imageFormatFor(r.screenshot);  // refused before the window opens
     if (!r.script.empty()) requireInputFile(r.script);
-    // Before a window opens: a missing file or a folder is exit code 3 with
-    // its reason, not an error panel (files dropped later still get one).
-    if (!r.file.empty()) requireInputFile(r.file);
     if (!r.screenshot.empty() && r.frames < 0 && r.script.empty()) r.frames = 1;
+    // Before a window opens: a missing file is exit code 3 with its reason,
+    // not an error panel (files dropped later still get one). A folder
+    // opens the file browser there, except in a --frames run, which has
+    // nothing to render then.
+    const bool browsable = r.frames < 0 && std::filesystem::is_directory(r.file);
+    if (!r.file.empty() && !browsable) requireInputFile(r.file);
     return r;
 }
 
@@ -88,6 +91,11 @@ public:
 
 private:
     void open(const std::string& request);
+    /// What the UI, the keys and a drop asked for (open, reset, save, undo,
+    /// redo), after each event poll or script command.
+    void handleRequests();
+    /// Window size (the layout's units) and framebuffer pixels per unit.
+    void readWindowSize();
     void frame();
     void saveScreenshot(const std::string& path, bool withUi = false);
 
@@ -103,6 +111,15 @@ private:
 };
 
 void ViewerApp::open(const std::string& request) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(request, ec)) {  // a folder (dropped, typed, given): browse it
+        try {
+            showBrowser(state_, request);
+        } catch (const std::exception& e) {
+            state_.error = e.what();
+        }
+        return;
+    }
     state_.error.clear();
     state_.warnings.clear();
     state_.selected = nullptr;
@@ -111,10 +128,14 @@ void ViewerApp::open(const std::string& request) {
     state_.edits.clear();  // the edits belong to the scene they were made on
     try {
         updateLayout(state_);
-        const PixelRect view = pixels(state_.layout.view);
+        const PixelRect view = state_.viewPixels();
         auto scene = openScene(request, view.w, view.h, state_);
+        state_.showBrowser = false;
+        settings_.remember(request);
+        state_.recent = settings_.recent;
         if (!scene) return;  // a JAR: its entries are listed
         state_.scene = std::move(scene);
+        state_.inspector.close();
         for (const auto& w : state_.scene->loaded().warnings) state_.warnings.push_back("warning: " + w);
         for (const auto& n : state_.scene->prepared().notes) state_.warnings.push_back(n);
         if (!args_.headlight) state_.scene->setHeadlight(false);
@@ -140,7 +161,7 @@ void ViewerApp::saveScreenshot(const std::string& request, bool withUi) {
     if (!target_->readbackReady()) throw std::runtime_error("view: the screenshot frame was not rendered");
     m3gcli::RgbaImage image = fromGraphics(*target_);
     if (!withUi) {
-        const PixelRect v = pixels(state_.layout.view);
+        const PixelRect v = state_.viewPixels();
         const int x0 = std::clamp(v.x, 0, image.width), y0 = std::clamp(v.y, 0, image.height);
         const int w = std::clamp(v.w, 0, image.width - x0), h = std::clamp(v.h, 0, image.height - y0);
         if (w != image.width || h != image.height) {
@@ -159,6 +180,38 @@ void ViewerApp::saveScreenshot(const std::string& request, bool withUi) {
     std::fprintf(stderr, "m3g: wrote %s (%dx%d)\n", path.c_str(), image.width, image.height);
 }
 
+void ViewerApp::readWindowSize() {
+    int w = 0, h = 0;
+    glfwGetWindowSize(window_, &w, &h);
+    state_.width = w > 0 ? w : fbWidth_;
+    state_.height = h > 0 ? h : fbHeight_;
+    // GLFW's cursor and ImGui are in window units, the swapchain in pixels:
+    // on a HiDPI screen whose window system scales windows there are two
+    // pixels a unit (glfwGetWindowContentScale tells the UI's size, not this).
+    state_.pixelScaleX = state_.width > 0 ? static_cast<float>(fbWidth_) / static_cast<float>(state_.width) : 1.0f;
+    state_.pixelScaleY = state_.height > 0 ? static_cast<float>(fbHeight_) / static_cast<float>(state_.height) : 1.0f;
+}
+
+void ViewerApp::handleRequests() {
+    // A drop is an open: the same identifier check, a folder opens the browser.
+    if (auto dropped = input_.takeDrop()) state_.openRequest = *dropped;
+    if (!state_.openRequest.empty()) {
+        const std::string request = std::move(state_.openRequest);
+        state_.openRequest.clear();
+        open(request);
+    }
+    if (state_.resetViewRequest && state_.scene) {
+        const PixelRect view = state_.viewPixels();
+        state_.scene->resetView(view.w, view.h);
+        state_.scene->useCamera(-1);
+    }
+    state_.resetViewRequest = false;
+    if (state_.saveRequest) input_.save("");
+    if (state_.undoRequest) input_.undo();
+    if (state_.redoRequest) input_.redo();
+    state_.saveRequest = state_.undoRequest = state_.redoRequest = false;
+}
+
 void ViewerApp::frame() {
     const auto now = Clock::now();
     const double dt = std::chrono::duration<double, std::milli>(now - last_).count();
@@ -171,8 +224,7 @@ void ViewerApp::frame() {
         fbHeight_ = h;
         target_->resize(w, h);
     }
-    state_.fbWidth = w;
-    state_.fbHeight = h;
+    readWindowSize();
     updateLayout(state_);  // (the orbit camera follows the view's size)
     // Interactive sessions follow the clock; tests (frames/script) do not.
     if (state_.playing && args_.frames < 0 && args_.script.empty()) state_.timeMs += dt * state_.speed;
@@ -186,7 +238,7 @@ void ViewerApp::frame() {
     if (state_.showUi) drawUi(state_, *overlay_);
     drawDebugLines(state_);
     ImGui::Render();
-    const PixelRect view = pixels(state_.layout.view);
+    const PixelRect view = state_.viewPixels();
 
     m3g::vk::setDebugView(state_.debug);
     m3g::Graphics3D* g3d = m3g::Graphics3D::getInstance();
@@ -262,8 +314,8 @@ int ViewerApp::run() {
     target_->setOverlay(overlay_);
     state_.showUi = !args_.noUi;
     state_.layoutSizes = settings_.layout;
-    state_.fbWidth = fbWidth_;
-    state_.fbHeight = fbHeight_;
+    state_.recent = settings_.recent;
+    readWindowSize();
     updateLayout(state_);
     state_.lenient = args_.lenient;
     state_.timeMs = args_.time;
@@ -276,7 +328,10 @@ int ViewerApp::run() {
         if (!args_.script.empty()) {
             Script script = Script::load(args_.script);
             rc = script.run([&](const ScriptCommand& c) {
-                return input_.apply(c, [&] { frame(); }, [&](const std::string& p, bool ui) { saveScreenshot(p, ui); });
+                const int status =
+                    input_.apply(c, [&] { frame(); }, [&](const std::string& p, bool ui) { saveScreenshot(p, ui); });
+                handleRequests();
+                return status;
             });
         } else if (args_.frames > 0) {
             for (int i = 0; i + 1 < args_.frames; ++i) frame();
@@ -285,21 +340,7 @@ int ViewerApp::run() {
         } else {
             while (!glfwWindowShouldClose(window_) && !state_.quit) {
                 glfwPollEvents();
-                if (!state_.openRequest.empty()) {
-                    open(state_.openRequest);
-                    state_.openRequest.clear();
-                }
-                if (auto dropped = input_.takeDrop()) open(*dropped);
-                if (state_.resetViewRequest && state_.scene) {
-                    const PixelRect view = pixels(state_.layout.view);
-                    state_.scene->resetView(view.w, view.h);
-                    state_.scene->useCamera(-1);
-                }
-                state_.resetViewRequest = false;
-                if (state_.saveRequest) input_.save("");
-                if (state_.undoRequest) input_.undo();
-                if (state_.redoRequest) input_.redo();
-                state_.saveRequest = state_.undoRequest = state_.redoRequest = false;
+                handleRequests();
                 if (!state_.screenshotPath.empty()) {
                     saveScreenshot(state_.screenshotPath);
                     state_.screenshotPath.clear();
@@ -353,7 +394,7 @@ void addViewCommand(CLI::App& parent, CommandTable& table) {
     CLI::App* app = addCommandApp(parent, "view",
                                   "the desktop viewer for .m3g, PNG, JPEG or a game .jar (needs a display; docs/viewer.md)");
     auto f = std::make_shared<ViewFlags>();
-    app->add_option("file", f->file, "the file to open (default: the last one)")->type_name("FILE");
+    app->add_option("file", f->file, "the file to open (default: the last one); a folder: browse it")->type_name("FILE");
     app->add_option("--size", f->size, "window size (default: the last one, or 1024x768)")->type_name("WxH");
     app->add_option("--time", f->time, "world time to start at, ms (default 0)")->type_name("MS");
     app->add_option("--camera-index", f->camera, "look through the file's I-th Camera (0-based; -1: the viewer's orbit camera)")

@@ -31,7 +31,10 @@ public:
 
     /// A texture id for ImGui::Image showing `image` (any Image2D format,
     /// uploaded again when the image changes). Needs the Vulkan device.
-    void* texture(const Image2D& image);
+    /// Sampled bilinearly, or nearest-neighbour when `nearest` is set (a
+    /// magnified image then shows its texels as squares: the viewer's
+    /// texture inspector); both share one upload.
+    void* texture(const Image2D& image, bool nearest = false);
 
 private:
     struct Impl;
