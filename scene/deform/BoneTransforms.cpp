@@ -89,9 +89,9 @@ bool BoneTransforms::compute(const SkinnedMesh& mesh, std::vector<float>& out) {
                                            : toMesh_[static_cast<std::size_t>(p.parentIndex)] * p.node->compositeTransform();
         }
     }
+    Transform general;  // outside the loop: a Transform's constructor writes the identity
     for (std::size_t b = 0; b < bones; ++b) {
         const int node = boneNode_[b];
-        Transform general;
         const Transform* m = nullptr;
         if (node >= 0) {
             if (!nodes_[static_cast<std::size_t>(node)].dirty) {
@@ -110,7 +110,8 @@ bool BoneTransforms::compute(const SkinnedMesh& mesh, std::vector<float>& out) {
                 changed_[b] = 0;
                 continue;
             }
-            m = &general;  // the mesh itself: the identity
+            general = Transform();  // the mesh itself: the identity
+            m = &general;
         }
         changed_[b] = 1;
         any = true;

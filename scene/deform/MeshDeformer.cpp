@@ -256,20 +256,24 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
     // have: an entry is a function of its bone's matrix, the at-rest matrix,
     // scale and bias, and a change of the last three invalidates out_).
     // With out_ valid, only the vertices of changed entries are skinned.
-    const bool partial = valid_ && palette_.size() == bones;
+    // out_ holds the last call's vertices for these inputs: vertices without
+    // bones keep theirs.
+    const bool kept = valid_ && palette_.size() == bones;
+    bool partial = kept;
     entryChanged_.assign(bones, 1);
-    if (partial) {
+    if (kept) {
         const auto composed = boneTransforms_.changedBones();
-        bool any = false;
+        std::size_t changed = 0;
         for (std::size_t b = 0; b < bones; ++b) {
             entryChanged_[b] = composed[b] && std::memcmp(&palette_[b], &newPalette_[b], sizeof(skin::PaletteEntry)) != 0;
-            if (entryChanged_[b]) palette_[b] = newPalette_[b];
-            any = any || entryChanged_[b];
+            changed += entryChanged_[b];
         }
-        if (!any) return false;
-    } else {
-        palette_.swap(newPalette_);
+        if (changed == 0) return false;
+        // Every entry changed (the common animated frame): no run to leave
+        // out, the run lists as they are.
+        partial = changed < bones;
     }
+    palette_.swap(newPalette_);
     valid_ = false;
 
     // No position array: zeros (skinned like any point).
@@ -292,7 +296,7 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
     // mix bones).
     const int stride = table.maxInfluences();
     bool compactRan = false;
-    for (int c = partial ? 1 : 0; c <= partition_.maxInfluences(); ++c) {
+    for (int c = kept ? 1 : 0; c <= partition_.maxInfluences(); ++c) {
         const auto group = partition_.group(c);
         if (group.empty()) continue;
         skin::SkinningJob job;
