@@ -1,8 +1,7 @@
 #include "BoneTransforms.h"
 
 #include <algorithm>
-#include <bit>
-#include <functional>
+#include <unordered_map>
 
 #include <m3g/Node.h>
 #include <m3g/SkinnedMesh.h>
@@ -11,82 +10,114 @@ namespace m3g::detail {
 
 namespace {
 
-/// Fibonacci hashing of the node's address (its low bits are alignment).
-std::size_t slotOf(const Node* node, std::size_t mask) noexcept {
-    return ((std::hash<const Node*>{}(node) * 0x9E3779B97F4A7C15ull) >> 20) & mask;
-}
+constexpr int kNotUnderMesh = -1;  // boneNode_: the general path
+constexpr int kIsMesh = -2;        // boneNode_: the identity
 
 }  // namespace
 
-int BoneTransforms::find(const Node* node) const noexcept {
-    const std::size_t mask = table_.size() - 1;
-    for (std::size_t i = slotOf(node, mask);; i = (i + 1) & mask) {
-        if (table_[i].node == node) return static_cast<int>(table_[i].index);
-        if (!table_[i].node) return -1;
-    }
-}
-
-void BoneTransforms::insert(const Node* node, const Transform& toMesh) {
-    if (2 * (toMesh_.size() + 1) > table_.size()) {
-        // Grow and rehash (kept across frames: no allocation once the
-        // skeleton's size is known).
-        std::vector<Slot> previous(table_.size() * 2);
-        previous.swap(table_);  // table_ is now the larger, empty one
-        const std::size_t mask = table_.size() - 1;
-        for (const Slot& s : previous) {
-            if (!s.node) continue;
-            std::size_t i = slotOf(s.node, mask);
-            while (table_[i].node) i = (i + 1) & mask;
-            table_[i] = s;
-        }
-    }
-    const std::size_t mask = table_.size() - 1;
-    std::size_t i = slotOf(node, mask);
-    while (table_[i].node) i = (i + 1) & mask;
-    table_[i] = {node, static_cast<std::uint32_t>(toMesh_.size())};
-    toMesh_.push_back(toMesh);
-}
-
-void BoneTransforms::compute(const SkinnedMesh& mesh, std::vector<float>& out) {
-    const int bones = mesh.boneCount();
-    out.resize(static_cast<std::size_t>(bones) * 16);
-    // Room for a few nodes per bone to start with (cleared every call, so
-    // kept small for the common one-bone mesh); insert() grows it.
-    const std::size_t start = std::bit_ceil(std::max<std::size_t>(16, 4 * static_cast<std::size_t>(bones)));
-    if (table_.size() < start)
-        table_.assign(start, Slot{});
-    else
-        std::fill(table_.begin(), table_.end(), Slot{});
-    toMesh_.clear();
-    for (int b = 0; b < bones; ++b) {
-        const Node* bone = mesh.bone(b);
-        // Up from the bone to the mesh, or to a node already composed.
-        path_.clear();
+void BoneTransforms::build(const SkinnedMesh& mesh) {
+    nodes_.clear();
+    const auto bones = static_cast<std::size_t>(mesh.boneCount());
+    boneNode_.assign(bones, kNotUnderMesh);
+    std::unordered_map<const Node*, int> index;  // only here: paths change with the mesh or its bones
+    std::vector<const Node*> path;
+    for (std::size_t b = 0; b < bones; ++b) {
+        const Node* bone = mesh.bone(static_cast<int>(b));
+        // Up from the bone to the mesh, or to a node already listed.
+        path.clear();
         const Node* n = bone;
         int known = -1;
-        while (n && n != &mesh && (known = find(n)) < 0) {
-            path_.push_back(n);
+        while (n && n != &mesh) {
+            if (auto it = index.find(n); it != index.end()) {
+                known = it->second;
+                break;
+            }
+            path.push_back(n);
             n = n->parentNode();
         }
-        Transform m;
-        if (!n) {
+        if (!n) continue;  // not under the mesh: getTransformTo each call
+        if (path.empty() && known < 0) {
+            boneNode_[b] = kIsMesh;
+            continue;
+        }
+        // Down again, parent first.
+        int parent = known;
+        for (auto it = path.rbegin(); it != path.rend(); ++it) {
+            PathNode p;
+            p.node = *it;
+            p.parent = (*it)->parentNode();
+            p.parentIndex = parent;
+            parent = static_cast<int>(nodes_.size());
+            index.emplace(*it, parent);
+            nodes_.push_back(p);
+        }
+        boneNode_[b] = parent;
+    }
+    toMesh_.resize(nodes_.size());
+    meshId_ = mesh.getObjectId();
+    built_ = true;
+}
+
+bool BoneTransforms::compute(const SkinnedMesh& mesh, std::vector<float>& out) {
+    const auto bones = static_cast<std::size_t>(mesh.boneCount());
+    // The paths are listed again for another mesh or a new bone
+    // (addTransform), and, should a node on them ever have been moved, when
+    // a parent differs from the listed one (checked on the walk).
+    bool force = !built_ || mesh.getObjectId() != meshId_ || boneNode_.size() != bones || out.size() != bones * 16;
+    if (force) build(mesh);
+    out.resize(bones * 16);
+    changed_.resize(bones);
+    bool any = false;
+    for (bool walked = false; !walked;) {
+        walked = true;
+        for (PathNode& p : nodes_) {
+            if (p.node->parentNode() != p.parent) {
+                build(mesh);
+                force = true;
+                walked = false;
+                break;
+            }
+            const std::uint32_t revision = p.node->getRevision();
+            const bool parentDirty = p.parentIndex >= 0 && nodes_[static_cast<std::size_t>(p.parentIndex)].dirty;
+            p.dirty = force || parentDirty || revision != p.revision;
+            if (!p.dirty) continue;
+            p.revision = revision;
+            // (node -> mesh) = (parent -> mesh) x composite, the same
+            // association as composing the path top-down.
+            const auto i = static_cast<std::size_t>(&p - nodes_.data());
+            toMesh_[i] = p.parentIndex < 0 ? p.node->compositeTransform()
+                                           : toMesh_[static_cast<std::size_t>(p.parentIndex)] * p.node->compositeTransform();
+        }
+    }
+    Transform general;  // outside the loop: a Transform's constructor writes the identity
+    for (std::size_t b = 0; b < bones; ++b) {
+        const int node = boneNode_[b];
+        const Transform* m = nullptr;
+        if (node >= 0) {
+            if (!nodes_[static_cast<std::size_t>(node)].dirty) {
+                changed_[b] = 0;
+                continue;
+            }
+            m = &toMesh_[static_cast<std::size_t>(node)];
+        } else if (node == kNotUnderMesh) {
             // Not under the mesh (Group::removeChild refuses to detach a
             // bone, so only a future way of moving one would get here): the
             // general path, through the common ancestor with an inverse.
-            bone->getTransformTo(&mesh, &m);
+            mesh.bone(static_cast<int>(b))->getTransformTo(&mesh, &general);
+            m = &general;
         } else {
-            // Down again: (node -> mesh) = (parent -> mesh) x composite.
-            bool identity = known < 0;
-            if (!identity) m = toMesh_[static_cast<std::size_t>(known)];
-            for (auto it = path_.rbegin(); it != path_.rend(); ++it) {
-                const Transform c = (*it)->compositeTransform();
-                m = identity ? c : m * c;
-                identity = false;
-                insert(*it, m);
+            if (!force) {
+                changed_[b] = 0;
+                continue;
             }
+            general = Transform();  // the mesh itself: the identity
+            m = &general;
         }
-        std::copy(m.rows().begin(), m.rows().end(), out.begin() + static_cast<std::ptrdiff_t>(b) * 16);
+        changed_[b] = 1;
+        any = true;
+        std::copy(m->rows().begin(), m->rows().end(), out.begin() + static_cast<std::ptrdiff_t>(b) * 16);
     }
+    return any;
 }
 
 }  // namespace m3g::detail

@@ -96,6 +96,32 @@ void require(bool ok, const char* what) {
     if (!ok) throw IllegalStateException(str("MeshDeformer: internal error, invalid ", what));
 }
 
+/// The runs of `runs` with a slot whose bone's palette entry changed (a bone
+/// outside the palette counts as changed: the kernel handles it), `start`
+/// renumbered as the kernels require; `runs` itself when that is all of
+/// them. A run's vertices depend on nothing else once the inputs are the
+/// last call's, so the others keep their outputs.
+std::span<const skin::InfluenceRun> movedRuns(std::span<const skin::InfluenceRun> runs,
+                                              std::span<const std::int32_t> bones, int stride, int count,
+                                              std::span<const std::uint8_t> changed,
+                                              std::vector<skin::InfluenceRun>& out) {
+    out.clear();
+    std::uint32_t start = 0;
+    for (const skin::InfluenceRun& r : runs) {
+        const std::int32_t* slots = bones.data() + static_cast<std::size_t>(r.firstVertex) * static_cast<std::size_t>(stride);
+        bool moved = false;
+        for (int k = 0; k < count && !moved; ++k) {
+            const auto b = static_cast<std::size_t>(slots[k]);
+            moved = b >= changed.size() || changed[b] != 0;
+        }
+        if (!moved) continue;
+        out.push_back({r.firstVertex, r.vertexCount, start});
+        start += r.vertexCount;
+    }
+    if (out.size() == runs.size()) return runs;
+    return out;
+}
+
 }  // namespace
 
 void MeshDeformer::addSource(const VertexBuffer* vb) {
@@ -145,7 +171,8 @@ bool MeshDeformer::update(const Mesh& mesh, Output output) {
 }
 
 bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
-    const VertexBuffer& vb = *mesh.getVertexBuffer();
+    // The raw pointer: getVertexBuffer()'s Ref costs two atomic operations.
+    const VertexBuffer& vb = *mesh.vertexBuffer();
     newSources_.clear();
     addSource(&vb);
     addSource(vb.positions());
@@ -198,9 +225,11 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
 
     // The palette, once per bone: (bone -> mesh now) x (at rest). The
     // at-rest matrices are captured by addTransform, which also changes the
-    // table: copied only then.
+    // table: copied only then. No node on the bones' paths changed: the
+    // palette, and so the vertices, are the last call's.
     const auto bones = static_cast<std::size_t>(mesh.boneCount());
-    boneTransforms_.compute(mesh, boneMatrices_);
+    const bool bonesMoved = boneTransforms_.compute(mesh, boneMatrices_);
+    if (valid_ && !bonesMoved && palette_.size() == bones) return false;
     if (tableChanged || atRest_.size() != bones * 16) {
         atRest_.resize(bones * 16);
         for (std::size_t b = 0; b < bones; ++b) {
@@ -223,10 +252,27 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         paletteJob.positionBias = vb.positionBias();
     }
     require(paletteJob.run(), "palette job");
-    const bool paletteChanged = palette_.size() != bones ||
-                                (bones > 0 && std::memcmp(palette_.data(), newPalette_.data(),
-                                                          bones * sizeof(skin::PaletteEntry)) != 0);
-    if (valid_ && !paletteChanged) return false;
+    // Which entries changed, bit for bit (only the bones composed again can
+    // have: an entry is a function of its bone's matrix, the at-rest matrix,
+    // scale and bias, and a change of the last three invalidates out_).
+    // With out_ valid, only the vertices of changed entries are skinned.
+    // out_ holds the last call's vertices for these inputs: vertices without
+    // bones keep theirs.
+    const bool kept = valid_ && palette_.size() == bones;
+    bool partial = kept;
+    entryChanged_.assign(bones, 1);
+    if (kept) {
+        const auto composed = boneTransforms_.changedBones();
+        std::size_t changed = 0;
+        for (std::size_t b = 0; b < bones; ++b) {
+            entryChanged_[b] = composed[b] && std::memcmp(&palette_[b], &newPalette_[b], sizeof(skin::PaletteEntry)) != 0;
+            changed += entryChanged_[b];
+        }
+        if (changed == 0) return false;
+        // Every entry changed (the common animated frame): no run to leave
+        // out, the run lists as they are.
+        partial = changed < bones;
+    }
     palette_.swap(newPalette_);
     valid_ = false;
 
@@ -244,16 +290,23 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         finish();
         return true;
     }
-    for (int c = 0; c <= partition_.maxInfluences(); ++c) {
+    // A partial frame (out_ valid for these inputs, some entries changed):
+    // vertices without bones keep their outputs, runs whose bones did not
+    // move keep theirs; loose vertices are all skinned again (their blocks
+    // mix bones).
+    const int stride = table.maxInfluences();
+    bool compactRan = false;
+    for (int c = kept ? 1 : 0; c <= partition_.maxInfluences(); ++c) {
         const auto group = partition_.group(c);
         if (group.empty()) continue;
         skin::SkinningJob job;
         // With the compact space, the loose vertices go there (below).
         if (c == 0 || !compact_) job.vertices = partition_.loose(c);
-        job.runs = partition_.runs(c);
+        job.runs = partial ? movedRuns(partition_.runs(c), table.bones(), stride, c, entryChanged_, movedRuns_)
+                           : partition_.runs(c);
         job.vertexCount = n;
         job.influenceCount = c;
-        job.influenceStride = table.maxInfluences();
+        job.influenceStride = stride;
         job.boneIndices = table.bones();
         job.boneWeights = table.weights();
         job.palette = palette_;
@@ -266,13 +319,17 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         job.outPositions = out_.positions;
         job.inNormals = baseNormals_;
         job.outNormals = out_.normals;
-        require(group.size() >= kParallelVertices ? job.runParallel(skin::ThreadPool::shared(), kGrain) : job.run(),
-                "skinning job");
+        if (!job.vertices.empty() || !job.runs.empty())
+            require(group.size() >= kParallelVertices ? job.runParallel(skin::ThreadPool::shared(), kGrain) : job.run(),
+                    "skinning job");
         if (c == 0 || !compact_ || partition_.loose(c).empty()) continue;
         // The compact vertices with c influences (runs and loose ones) in the
         // compact arrays, written back to their mesh vertices below.
         job.vertices = partition_.compactLoose(c);
-        job.runs = partition_.compactRuns(c);
+        job.runs = partial ? movedRuns(partition_.compactRuns(c), partition_.compactBones(), stride, c, entryChanged_,
+                                       movedRuns_)
+                           : partition_.compactRuns(c);
+        if (job.vertices.empty() && job.runs.empty()) continue;
         job.vertexCount = partition_.compactOrder().size();
         job.boneIndices = partition_.compactBones();
         job.boneWeights = partition_.compactWeights();
@@ -282,8 +339,9 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         job.outNormals = compactOutNormals_;
         require(group.size() >= kParallelVertices ? job.runParallel(skin::ThreadPool::shared(), kGrain) : job.run(),
                 "skinning job");
+        compactRan = true;
     }
-    if (compact_ && output_ == Output::Vertices) {
+    if (compact_ && compactRan && output_ == Output::Vertices) {
         const auto order = partition_.compactOrder();
         if (compactOutNormals_.empty())
             skin::scatterXyz(order, compactOutPositions_.data(), out_.positions.data());

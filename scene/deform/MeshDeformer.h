@@ -143,6 +143,10 @@ private:
     std::vector<float> boneMatrices_;  // 16 per bone: bone -> mesh now
     std::vector<float> atRest_;        // 16 per bone
     std::vector<skin::PaletteEntry> palette_, newPalette_;
+    // Per bone, whether its palette entry differs from the last call's (a
+    // frame that keeps out_ recomputes only the runs of changed bones).
+    std::vector<std::uint8_t> entryChanged_;
+    std::vector<skin::InfluenceRun> movedRuns_;  // scratch: those runs
 
     // ---- MorphingMesh: base then targets, per attribute, as floats ----
     struct MorphAttribute {
