@@ -54,7 +54,8 @@ Pipelines::Pipelines(Context& ctx, std::size_t capacity) : ctx_(ctx), capacity_(
     vert_ = createShaderModule(device, m3g_vert, sizeof(m3g_vert));
     frag_ = createShaderModule(device, m3g_frag, sizeof(m3g_frag));
     cachePath_ = pipelineCachePath(ctx.properties());
-    const std::vector<std::uint8_t> seed = readPipelineCache(cachePath_, ctx.properties());
+    onDisk_ = readPipelineCache(cachePath_, ctx.properties());
+    const std::vector<std::uint8_t>& seed = onDisk_;
     VkPipelineCacheCreateInfo ci{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
     ci.initialDataSize = seed.size();
     ci.pInitialData = seed.empty() ? nullptr : seed.data();
@@ -79,7 +80,13 @@ void Pipelines::saveCache() noexcept {
     }
     if (vkGetPipelineCacheData(ctx_.device(), cache_, &size, data.data()) != VK_SUCCESS) return;
     data.resize(size);
-    if (writePipelineCache(cachePath_, data)) ++ctx_.pipelineCacheSaves;
+    // Nothing new for the file: lavapipe's cache data is its header alone
+    // whatever was compiled, so every `m3g render` process after the first
+    // wrote the same 32 bytes through a temporary file and a rename.
+    if (data != onDisk_ && writePipelineCache(cachePath_, data)) {
+        ++ctx_.pipelineCacheSaves;
+        onDisk_ = std::move(data);
+    }
     unsaved_ = 0;
     lastSave_ = std::chrono::steady_clock::now();
 }

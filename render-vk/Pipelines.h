@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 #include <m3g/frame/PipelineKey.h>
 
@@ -79,6 +80,8 @@ private:
     VkPipelineCache cache_ = VK_NULL_HANDLE;
     /// The cache file (seeded from it at construction), "" for none.
     std::string cachePath_;
+    /// The bytes the file holds (as read at construction or last written).
+    std::vector<std::uint8_t> onDisk_;
     std::size_t unsaved_ = 0;
     std::chrono::steady_clock::time_point lastSave_{};
     std::unordered_map<std::uint64_t, Entry> pipelines_;

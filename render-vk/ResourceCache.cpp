@@ -36,11 +36,19 @@ ResourceCache::ResourceCache(Context& ctx, VkDescriptorSetLayout textureSetLayou
     ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
     ai.commandBufferCount = 1;
     check(vkAllocateCommandBuffers(ctx_.device(), &ai, &uploadCmd_), "vkAllocateCommandBuffers (uploads)");
-    // The white texel that stands for an unused texture unit, uploaded now
-    // (no frame is being prepared yet).
-    const std::vector<std::uint8_t> white{255, 255, 255, 255};
-    ctx_.submitNow([&](VkCommandBuffer cmd) { white_ = createTexture(cmd, white, 1, 1, false); });
-    endFrame();  // the staging buffer
+}
+
+const Image& ResourceCache::white() {
+    // The white texel that stands for an unused texture unit: made by the
+    // first frame that names one, its upload recorded with that frame's
+    // uploads. A submit of its own at construction cost every renderer (and
+    // every `m3g render` process) one more round trip through lavapipe's
+    // queue thread before the first frame.
+    if (!white_.image) {
+        const std::vector<std::uint8_t> texel{255, 255, 255, 255};
+        white_ = createTexture(uploadCommands(), texel, 1, 1, false);
+    }
+    return white_;
 }
 
 ResourceCache::~ResourceCache() {
@@ -242,7 +250,7 @@ Image ResourceCache::createTexture(VkCommandBuffer cmd, const std::vector<std::u
 }
 
 const Image& ResourceCache::texture(const frame::TextureRef& ref, frame::FrameSources& sources) {
-    if (!ref.id) return white_;
+    if (!ref.id) return white();
     TextureEntry& e = textures_[ref.id];
     if (e.image.image && e.revision == ref.revision && e.mipmaps == ref.mipmaps) return e.image;
     int w = 0, h = 0;
@@ -268,11 +276,11 @@ VkDescriptorSet ResourceCache::textureSet(const Image* t0, VkSampler s0, const I
     // The white texel: repeat, nearest, base level (the key 0).
     constexpr frame::SamplerKey kWhite = frame::makeSampler(false, false, false, frame::LevelFilter::Base);
     if (!t0) {
-        t0 = &white_;
+        t0 = &white();
         s0 = sampler(kWhite);
     }
     if (!t1) {
-        t1 = &white_;
+        t1 = &white();
         s1 = sampler(kWhite);
     }
     const std::array<std::uint64_t, 4> key{reinterpret_cast<std::uint64_t>(t0->view), reinterpret_cast<std::uint64_t>(s0),

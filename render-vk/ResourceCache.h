@@ -105,6 +105,9 @@ private:
     /// Creates the image and records its upload (and mip chain) into `cmd`.
     Image createTexture(VkCommandBuffer cmd, const std::vector<std::uint8_t>& rgba, int width, int height, bool mipmaps);
     VkCommandBuffer uploadCommands();
+    /// The 1x1 white texture, created (and its upload recorded into this
+    /// frame's uploads) at first use.
+    const Image& white();
 
     Context& ctx_;
     VkDescriptorSetLayout setLayout_;
