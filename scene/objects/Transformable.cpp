@@ -26,12 +26,7 @@ Transformable::Transformable() = default;
 
 void Transformable::setOrientationQuat(float qx, float qy, float qz, float qw) noexcept {
     const float len = std::sqrt(qx * qx + qy * qy + qz * qz + qw * qw);
-    // animate() writes interpolated quaternions, unit to float rounding:
-    // their length often rounds to exactly 1, and dividing by 1 would change
-    // no bit, so the four divisions are skipped.
-    if (len == 1.0f)
-        q_ = {qx, qy, qz, qw};
-    else if (len > 0.0f && std::isfinite(len))
+    if (len > 0.0f && std::isfinite(len))
         q_ = {qx / len, qy / len, qz / len, qw / len};
     else
         q_ = {0, 0, 0, 1};
