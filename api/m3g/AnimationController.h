@@ -31,7 +31,11 @@ public:
     /// Sets the reference point: getPosition(worldTime) == sequenceTime.
     void setPosition(float sequenceTime, int worldTime);
     /// refSequenceTime + speed * (worldTime - refWorldTime).
-    float getPosition(int worldTime) const noexcept;
+    /// In double: the world time difference may not fit an int or a float.
+    /// Inline, as isActive: animate() asks once per track and frame.
+    float getPosition(int worldTime) const noexcept {
+        return float(double(refSequenceTime_) + double(speed_) * (double(worldTime) - double(refWorldTime_)));
+    }
     /// (1.1) The world time of the reference point.
     int getRefWorldTime() const noexcept { return refWorldTime_; }
 
@@ -43,7 +47,9 @@ public:
 
     // ---- Engine interface ----
     /// start == end, or start <= worldTime < end.
-    bool isActive(int worldTime) const noexcept;
+    bool isActive(int worldTime) const noexcept {
+        return start_ == end_ || (worldTime >= start_ && worldTime < end_);
+    }
 
 protected:
     AnimationController(const AnimationController& other) = default;

@@ -79,6 +79,11 @@ public:
     /// call after a change. Empty for other interpolations. Call after
     /// validate().
     std::span<const float> quaternionArcs() const;
+    /// SPLINE sequences: the Hermite tangents of every segment
+    /// (detail::splineTangents: 2 * getComponentCount() floats per valid
+    /// key), computed on the first call after a change. Empty for other
+    /// interpolations. Call after validate().
+    std::span<const float> splineTangents() const;
 
 protected:
     KeyframeSequence(const KeyframeSequence& other);
@@ -97,10 +102,11 @@ private:
     std::vector<int> times_;
     std::vector<float> values_;
     mutable bool validated_ = false;
-    void prepareQuaternions() const;
-    mutable std::vector<float> squad_;  // squadControls(), while quaternionsReady_
-    mutable std::vector<float> arcs_;   // quaternionArcs(), while quaternionsReady_
-    mutable bool quaternionsReady_ = false;
+    void prepareSampling() const;
+    mutable std::vector<float> squad_;     // squadControls(), while samplingReady_
+    mutable std::vector<float> arcs_;      // quaternionArcs(), while samplingReady_
+    mutable std::vector<float> tangents_;  // splineTangents(), while samplingReady_
+    mutable bool samplingReady_ = false;
 };
 
 }  // namespace m3g

@@ -32,21 +32,12 @@ void AnimationController::setPosition(float sequenceTime, int worldTime) {
     touch();
 }
 
-float AnimationController::getPosition(int worldTime) const noexcept {
-    // In double: the world time difference may not fit an int or a float.
-    return float(double(refSequenceTime_) + double(speed_) * (double(worldTime) - double(refWorldTime_)));
-}
-
 void AnimationController::setWeight(float weight) {
     if (!(weight >= 0.0f))
         throw IllegalArgumentException(
             detail::str("AnimationController::setWeight: weight ", weight, " must be >= 0"));
     weight_ = weight;
     touch();
-}
-
-bool AnimationController::isActive(int worldTime) const noexcept {
-    return start_ == end_ || (worldTime >= start_ && worldTime < end_);
 }
 
 }  // namespace m3g

@@ -157,7 +157,8 @@ void AnimationPlan::build(Object3D& root) {
                 // holds both for as long as this plan is current.
                 const KeyframeSequence* sequence = track.getKeyframeSequence().get();
                 components = sequence->getComponentCount();  // the same for every track on a property
-                if (const AnimationController* c = track.getController().get()) tracks_.push_back({sequence, c, 0});
+                if (const AnimationController* c = track.getController().get())
+                    tracks_.push_back({sequence, c, 0, kNotPrepared, {}});
             }
             if (tracks_.size() > firstTrack) {
                 properties_.push_back(
@@ -185,10 +186,9 @@ int AnimationPlan::apply(int worldTime) {
     for (const Target& target : targets_) {
         for (std::uint32_t p = target.firstProperty; p < target.endProperty; ++p) {
             const Property& property = properties_[p];
-            const std::span<float> sum(sum_.data(), std::size_t(property.components));
-            const std::span<float> sample(sample_.data(), std::size_t(property.components));
-            std::fill(sum.begin(), sum.end(), 0.0f);
-            double totalWeight = 0.0;
+            const std::size_t components = std::size_t(property.components);
+            float* const sum = sum_.data();
+            bool contributed = false;
             for (std::uint32_t t = property.firstTrack; t < property.endTrack; ++t) {
                 Track& track = tracks_[t];
                 const AnimationController& c = *track.controller;
@@ -201,18 +201,29 @@ int AnimationPlan::apply(int worldTime) {
                 if (!(weight > 0.0f)) continue;
 
                 const KeyframeSequence& seq = *track.sequence;
-                seq.validate();
-                KeyframeView view = viewOf(seq);
-                view.squad = seq.squadControls();   // empty unless SQUAD
-                view.arcs = seq.quaternionArcs();  // empty unless SLERP or SQUAD
-                const SampleValidity sv = sampleKeyframes(view, double(c.getPosition(worldTime)), sample, &track.segment);
-                validity = std::min(validity, worldValidity(sv, c.getSpeed()));
-                if (start != stop) validity = std::min(validity, double(stop) - double(worldTime));
-
-                for (std::size_t k = 0; k < sum.size(); ++k) sum[k] += weight * sample[k];
-                totalWeight += weight;
+                if (track.revision != seq.getRevision()) {
+                    track.view = preparedViewOf(seq);  // throws for a sequence that cannot be sampled
+                    track.revision = seq.getRevision();
+                }
+                // The first contributing track samples straight into the
+                // sum (0 + w s is w s), later ones are added weighted.
+                float* const out = contributed ? sample_.data() : sum;
+                const SampleValidity sv = sampleKeyframes(track.view, double(c.getPosition(worldTime)),
+                                                          std::span<float>(out, components), &track.segment);
+                // Every term is >= 0: once it is 0 the minimum is settled.
+                if (validity > 0.0) {
+                    validity = std::min(validity, worldValidity(sv, c.getSpeed()));
+                    if (start != stop) validity = std::min(validity, double(stop) - double(worldTime));
+                }
+                if (!contributed) {
+                    if (weight != 1.0f)
+                        for (std::size_t k = 0; k < components; ++k) sum[k] *= weight;
+                    contributed = true;
+                } else {
+                    for (std::size_t k = 0; k < components; ++k) sum[k] += weight * sample_[k];
+                }
             }
-            if (totalWeight > 0.0) target.object->updateProperty(property.property, sum);
+            if (contributed) target.object->updateProperty(property.property, std::span<const float>(sum, components));
         }
     }
     return static_cast<int>(std::clamp(validity, 0.0, kForever));

@@ -24,11 +24,15 @@
 // records (a game that swaps a sprite's image every frame keeps its plan).
 // What a plan does not record is read live at every animate(): controller
 // weights, speeds, positions and active intervals, keyframes, durations,
-// valid ranges, repeat modes. None of that can change what is reachable.
+// valid ranges, repeat modes. None of that can change what is reachable. (A
+// track keeps its sequence's sampling view, but only while the sequence's
+// revision is the one it was built at.)
 #pragma once
 
 #include <cstdint>
 #include <vector>
+
+#include "KeyframeSampler.h"
 
 namespace m3g {
 class Object3D;
@@ -81,7 +85,14 @@ private:
         const KeyframeSequence* sequence;
         const AnimationController* controller;
         int segment;  // keyframe segment of the last sample: the next one's first guess
+        // The sequence as last sampled (validated, with its kept controls,
+        // arcs and tangents), while its revision is `revision`: every
+        // setter of the sequence bumps it, so one compare per sample stands
+        // for the validation and cache checks. kNotPrepared: not yet.
+        std::uint64_t revision;
+        KeyframeView view;
     };
+    static constexpr std::uint64_t kNotPrepared = ~std::uint64_t{0};
 
     std::vector<Target> targets_;
     std::vector<Property> properties_;

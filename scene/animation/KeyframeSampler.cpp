@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include <m3g/KeyframeSequence.h>
 
@@ -75,6 +76,7 @@ public:
           loop_(k.repeatMode == KeyframeSequence::LOOP) {}
 
     int count() const { return count_; }
+    int components() const { return k_.components; }
     bool loop() const { return loop_; }
     int arrayIndex(int j) const {
         int i = k_.first + j;
@@ -108,8 +110,34 @@ private:
 };
 
 /// A looping sequence's time mapped into [t_first, t_first + duration).
-double loopTime(const ValidKeys& keys, double duration, double time) {
-    double s = std::fmod(time, duration);
+///
+/// time - q duration with q the floor of time / duration, the quotient
+/// taken with the kept reciprocal, instead of fmod (a libm call) or a
+/// division (either was the largest single cost of a LINEAR sample), with
+/// fmod's bits: for |time| < 2^40, q duration is an exact integer and the
+/// reciprocal's quotient is off by at most one, which the range check below
+/// corrects. With the true q the remainder time - q duration is exactly
+/// fmod's result (time >= 0; a remainder of two doubles is representable,
+/// so the subtraction is exact) or fmod's result plus the duration, rounded
+/// once, as the fmod path computes it (time < 0). When that rounding
+/// reaches the duration itself, q + 1 gives fmod's negative remainder and
+/// the fmod path's addition.
+[[gnu::noinline]] double fmodOutOfLine(double time, double duration) { return std::fmod(time, duration); }
+
+inline double loopTime(const ValidKeys& keys, double duration, double inverseDuration, double time) {
+    double s;
+    if (std::fabs(time) < 0x1p40) {
+        const double x = time * (inverseDuration > 0.0 ? inverseDuration : 1.0 / duration);
+        double q = double(static_cast<std::int64_t>(x));  // |x| < 2^40: floor without libm
+        if (q > x) q -= 1.0;
+        s = time - q * duration;
+        if (s < 0.0)
+            s = time - (q - 1.0) * duration;
+        else if (s >= duration)
+            s = time - (q + 1.0) * duration;
+    } else {
+        s = fmodOutOfLine(time, duration);
+    }
     if (s < 0.0) s += duration;
     if (s < keys.time(0)) s += duration;
     return s;
@@ -144,7 +172,7 @@ int segmentFrom(const ValidKeys& keys, int n, double s, int guess) {
 
 void copyKey(const ValidKeys& keys, int j, int components, std::span<float> out) {
     const float* v = keys.value(j);
-    std::copy(v, v + components, out.begin());
+    for (int c = 0; c < components; ++c) out[c] = v[c];  // a few floats: no memmove call
 }
 
 // Hermite tangent (central difference, scaled) at key j for component c.
@@ -203,12 +231,71 @@ void writeQuat(const Quatf& q, std::span<float> out) {
     out[3] = q.w;
 }
 
+// The samples of views without kept data (a view made by viewOf alone),
+// out of line so that the kept-data path, animate()'s, stays small.
+
+[[gnu::noinline]] void slerpPerSample(const float* p0, const float* p1, double u, std::span<float> out) {
+    writeQuat(slerp(quatfAt(p0), quatfAt(p1), float(u)), out);
+}
+
+[[gnu::noinline]] void splinePerSample(const ValidKeys& keys, int j, double u, std::span<float> out) {
+    const int comps = static_cast<int>(keys.components());
+    const int j1 = keys.next(j);
+    const double u2 = u * u, u3 = u2 * u;
+    const double h00 = 2 * u3 - 3 * u2 + 1, h01 = -2 * u3 + 3 * u2;
+    const double h10 = u3 - 2 * u2 + u, h11 = u3 - u2;
+    // tangent(keys, j, c, sOut) and tangent(keys, j1, c, sIn) with the
+    // neighbours' rows found once (next(j) is j1, prev(j1) is j) rather than
+    // per component, where every store to `out` (which may alias the key
+    // values, as far as the compiler knows) made it find them again.
+    const double sOut = keys.outScale(j) * 0.5, sIn = keys.inScale(j1) * 0.5;
+    const float* p0 = keys.value(j);
+    const float* p1 = keys.value(j1);
+    const float* before = keys.value(keys.prev(j));
+    const float* after = keys.value(keys.next(j1));
+    for (int c = 0; c < comps; ++c) {
+        const double tanOut = sOut * (double(p1[c]) - double(before[c]));
+        const double tanIn = sIn * (double(after[c]) - double(p0[c]));
+        out[c] = float(h00 * p0[c] + h01 * p1[c] + h10 * tanOut + h11 * tanIn);
+    }
+}
+
+[[gnu::noinline]] void squadPerSample(const KeyframeView& k, const ValidKeys& keys, int j, double u,
+                                      std::span<float> out) {
+    const int j1 = keys.next(j);
+    const bool cached = !k.squad.empty();
+    const Quatf a = cached ? squadControl(k, j, 0) : toFloat(squadA(keys, j));
+    const float uf = float(u);
+    const float* p0 = keys.value(j);
+    Quatf keyPoint, controlPoint;
+    if (!k.arcs.empty()) {
+        keyPoint = arcAt(quatfAt(p0), arcFrom(k.arcs, 2 * j), uf);
+        controlPoint = arcAt(a, arcFrom(k.arcs, 2 * j + 1), uf);
+    } else {
+        const Quatf b = cached ? squadControl(k, j1, 1) : toFloat(squadB(keys, j1));
+        keyPoint = slerp(quatfAt(p0), quatfAt(keys.value(j1)), uf);
+        controlPoint = slerp(a, b, uf);
+    }
+    writeQuat(slerp(keyPoint, controlPoint, 2.0f * uf * (1.0f - uf)), out);
+}
+
 }  // namespace
 
 KeyframeView viewOf(const KeyframeSequence& s) noexcept {
-    return KeyframeView{s.getInterpolationType(), s.getRepeatMode(),      s.getDuration(),
-                        s.getComponentCount(),    s.getKeyframeCount(),   s.getValidRangeFirst(),
-                        s.getValidRangeLast(),    s.keyTimes(),           s.keyValues()};
+    KeyframeView view{s.getInterpolationType(), s.getRepeatMode(),    s.getDuration(),
+                      s.getComponentCount(),    s.getKeyframeCount(), s.getValidRangeFirst(),
+                      s.getValidRangeLast(),    s.keyTimes(),         s.keyValues()};
+    if (view.duration > 0) view.inverseDuration = 1.0 / double(view.duration);
+    return view;
+}
+
+KeyframeView preparedViewOf(const KeyframeSequence& s) {
+    s.validate();
+    KeyframeView view = viewOf(s);
+    view.squad = s.squadControls();
+    view.arcs = s.quaternionArcs();
+    view.tangents = s.splineTangents();
+    return view;
 }
 
 std::string keyframeProblem(const KeyframeView& k) {
@@ -256,6 +343,27 @@ void keyframeArcs(const KeyframeView& k, std::vector<float>& out) {
     }
 }
 
+void splineTangents(const KeyframeView& k, std::vector<float>& out) {
+    out.clear();
+    if (k.interpolation != KeyframeSequence::SPLINE) return;
+    const ValidKeys keys(k);
+    const int comps = k.components;
+    out.resize(std::size_t(keys.count()) * 2 * std::size_t(comps));
+    for (int j = 0; j < keys.count(); ++j) {
+        const int j1 = keys.next(j);
+        const double sOut = keys.outScale(j) * 0.5, sIn = keys.inScale(j1) * 0.5;
+        const float* p0 = keys.value(j);
+        const float* p1 = keys.value(j1);
+        const float* before = keys.value(keys.prev(j));
+        const float* after = keys.value(keys.next(j1));
+        float* dst = out.data() + std::size_t(j) * 2 * std::size_t(comps);
+        for (int c = 0; c < comps; ++c) {
+            dst[c] = float(sOut * (double(p1[c]) - double(before[c])));
+            dst[comps + c] = float(sIn * (double(after[c]) - double(p0[c])));
+        }
+    }
+}
+
 SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<float> out, int* segment) {
     const ValidKeys keys(k);
     const int n = keys.count();
@@ -268,7 +376,7 @@ SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<flo
     // Map the time onto the keyframes.
     double s = time;
     if (keys.loop()) {
-        s = loopTime(keys, k.duration, time);
+        s = loopTime(keys, k.duration, k.inverseDuration, time);
     } else {
         if (s < keys.time(0)) {
             copyKey(keys, 0, comps, out);
@@ -305,44 +413,34 @@ SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<flo
         for (int c = 0; c < comps; ++c) out[c] = float((1.0 - u) * p0[c] + u * p1[c]);
         break;
     case KeyframeSequence::SLERP:
-        writeQuat(k.arcs.empty() ? slerp(quatfAt(p0), quatfAt(p1), float(u))
-                                 : arcAt(quatfAt(p0), arcFrom(k.arcs, j), float(u)),
-                  out);
+        if (k.arcs.empty())
+            slerpPerSample(p0, p1, u, out);
+        else
+            writeQuat(arcAt(quatfAt(p0), arcFrom(k.arcs, j), float(u)), out);
         break;
     case KeyframeSequence::SPLINE: {
+        if (k.tangents.empty()) {
+            splinePerSample(keys, j, u, out);
+            break;
+        }
         const double u2 = u * u, u3 = u2 * u;
         const double h00 = 2 * u3 - 3 * u2 + 1, h01 = -2 * u3 + 3 * u2;
         const double h10 = u3 - 2 * u2 + u, h11 = u3 - u2;
-        // tangent(keys, j, c, sOut) and tangent(keys, j1, c, sIn) with the
-        // neighbours' rows found once (next(j) is j1, prev(j1) is j) rather
-        // than per component, where every store to `out` (which may alias
-        // the key values, as far as the compiler knows) made it find them
-        // again. The same operations in the same order: the same bits.
-        const double sOut = keys.outScale(j) * 0.5, sIn = keys.inScale(j1) * 0.5;
-        const float* before = keys.value(keys.prev(j));
-        const float* after = keys.value(keys.next(j1));
-        for (int c = 0; c < comps; ++c) {
-            const double tanOut = sOut * (double(p1[c]) - double(before[c]));
-            const double tanIn = sIn * (double(after[c]) - double(p0[c]));
-            out[c] = float(h00 * p0[c] + h01 * p1[c] + h10 * tanOut + h11 * tanIn);
-        }
+        const float* tangent = k.tangents.data() + std::size_t(j) * 2 * std::size_t(comps);
+        for (int c = 0; c < comps; ++c)
+            out[c] = float(h00 * p0[c] + h01 * p1[c] + h10 * double(tangent[c]) + h11 * double(tangent[comps + c]));
         break;
     }
     case KeyframeSequence::SQUAD: {
         // slerp(slerp(q0, q1, u), slerp(A_j, B_j1, u), 2u(1 - u)), the two
         // inner arcs from the view when it has them.
-        const bool cached = !k.squad.empty();
-        const Quatf a = cached ? squadControl(k, j, 0) : toFloat(squadA(keys, j));
-        const float uf = float(u);
-        Quatf keyPoint, controlPoint;
-        if (!k.arcs.empty()) {
-            keyPoint = arcAt(quatfAt(p0), arcFrom(k.arcs, 2 * j), uf);
-            controlPoint = arcAt(a, arcFrom(k.arcs, 2 * j + 1), uf);
-        } else {
-            const Quatf b = cached ? squadControl(k, j1, 1) : toFloat(squadB(keys, j1));
-            keyPoint = slerp(quatfAt(p0), quatfAt(p1), uf);
-            controlPoint = slerp(a, b, uf);
+        if (k.squad.empty() || k.arcs.empty()) {
+            squadPerSample(k, keys, j, u, out);
+            break;
         }
+        const float uf = float(u);
+        const Quatf keyPoint = arcAt(quatfAt(p0), arcFrom(k.arcs, 2 * j), uf);
+        const Quatf controlPoint = arcAt(squadControl(k, j, 0), arcFrom(k.arcs, 2 * j + 1), uf);
         writeQuat(slerp(keyPoint, controlPoint, 2.0f * uf * (1.0f - uf)), out);
         break;
     }
@@ -362,7 +460,7 @@ void sampleKeyframeSlope(const KeyframeView& k, double time, bool fromLeft, std:
 
     double s = time;
     if (keys.loop()) {
-        s = loopTime(keys, k.duration, time);
+        s = loopTime(keys, k.duration, k.inverseDuration, time);
         if (fromLeft && s == keys.time(0)) s += k.duration;  // the wrap segment ends here
     } else {
         if (fromLeft ? s <= keys.time(0) : s < keys.time(0)) return;

@@ -33,6 +33,14 @@ struct KeyframeView {
     /// KeyframeSequence::quaternionArcs() computes them; empty: computed per
     /// sample, with the same result.
     std::span<const float> arcs = {};
+    /// SPLINE: the Hermite tangents of every segment (2 * components floats
+    /// per valid key j: the outgoing tangent at j, then the incoming one at
+    /// the next key), as splineTangents() computes them; empty: computed per
+    /// sample.
+    std::span<const float> tangents = {};
+    /// 1 / duration, for mapping looping time without a division (viewOf
+    /// sets it); 0: divided per sample.
+    double inverseDuration = 0.0;
 };
 
 /// Floats per arc in KeyframeView::arcs.
@@ -40,6 +48,12 @@ inline constexpr int kArcFloats = 8;
 
 /// View of a sequence (no copy; valid while the sequence is unchanged).
 KeyframeView viewOf(const KeyframeSequence& sequence) noexcept;
+
+/// The view animate() samples: the sequence validated (throws
+/// IllegalStateException, as KeyframeSequence::validate), with its kept SQUAD
+/// controls, arcs and SPLINE tangents. Valid while the sequence is unchanged
+/// (its revision the same: every setter bumps it).
+KeyframeView preparedViewOf(const KeyframeSequence& sequence);
 
 /// Empty string if the view can be sampled, else the reason: duration not
 /// set, times decreasing along the valid range, last valid time > duration.
@@ -69,6 +83,16 @@ void squadControls(const KeyframeView& k, std::vector<float>& out);
 /// instead of per sample: a sample then needs only a sine and a cosine per
 /// SLERP it takes from here (two of the three of a SQUAD sample).
 void keyframeArcs(const KeyframeView& k, std::vector<float>& out);
+
+/// The Hermite tangents of every segment of a valid SPLINE view into `out`
+/// (KeyframeView::tangents; nothing for other interpolations): the scaled
+/// central differences of JSR-184 1.1, KeyframeSequence, computed in double
+/// from the keys and rounded to float once per change of the sequence
+/// instead of per sample (which took two divisions and eight key reads per
+/// sample). Sampling with them differs from computing them per sample by
+/// that rounding only: about 1e-7 of the tangent, times a Hermite weight of
+/// at most 4/27.
+void splineTangents(const KeyframeView& k, std::vector<float>& out);
 
 /// Samples a valid view (see keyframeProblem) at sequence time `time` into
 /// `out` (at least k.components floats). Quaternion results (SLERP, SQUAD)

@@ -41,7 +41,7 @@ Object3D* KeyframeSequence::duplicateImpl(DuplicateMap&) const { return new Keyf
 
 void KeyframeSequence::changed() noexcept {
     validated_ = false;
-    quaternionsReady_ = false;
+    samplingReady_ = false;
     touch();
 }
 
@@ -101,26 +101,33 @@ void KeyframeSequence::setRepeatMode(int mode) {
     changed();
 }
 
-void KeyframeSequence::prepareQuaternions() const {
+void KeyframeSequence::prepareSampling() const {
     squad_.clear();
     arcs_.clear();
+    tangents_.clear();
     detail::KeyframeView view = detail::viewOf(*this);
     if (interpolation_ == SQUAD) {
         detail::squadControls(view, squad_);
         view.squad = squad_;
     }
     detail::keyframeArcs(view, arcs_);
-    quaternionsReady_ = true;
+    detail::splineTangents(view, tangents_);
+    samplingReady_ = true;
 }
 
 std::span<const float> KeyframeSequence::squadControls() const {
-    if (!quaternionsReady_) prepareQuaternions();
+    if (!samplingReady_) prepareSampling();
     return squad_;
 }
 
 std::span<const float> KeyframeSequence::quaternionArcs() const {
-    if (!quaternionsReady_) prepareQuaternions();
+    if (!samplingReady_) prepareSampling();
     return arcs_;
+}
+
+std::span<const float> KeyframeSequence::splineTangents() const {
+    if (!samplingReady_) prepareSampling();
+    return tangents_;
 }
 
 void KeyframeSequence::validate() const {

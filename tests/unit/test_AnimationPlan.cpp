@@ -333,3 +333,130 @@ TEST(AnimationPlan, StaleOnlyAfterAChangeToAnObjectItReached) {
     s.groupTurn->setController(s.run);
     EXPECT_FALSE(plan.current());
 }
+
+// What a plan keeps per track between animate() calls: the sequence's
+// sampling view (validated, with its SQUAD controls, arcs and SPLINE
+// tangents), refreshed when the sequence's revision changes. Every setter of
+// the sequence must show in the next animate(), for every interpolation.
+TEST(AnimationPlan, SequenceChangesShowForEveryInterpolation) {
+    const std::vector<std::vector<float>> quats = {
+        {0, 0, 0, 1}, {0, 0.38268f, 0, 0.92388f}, {0.5f, 0.5f, 0.5f, 0.5f}, {0.6f, 0, 0, 0.8f}};
+    const std::vector<std::vector<float>> points = {{0, 0, 0}, {1, 2, 0}, {3, 1, -1}, {0, -1, 2}};
+    for (int interpolation : {KeyframeSequence::LINEAR, KeyframeSequence::SLERP, KeyframeSequence::SPLINE,
+                              KeyframeSequence::SQUAD, KeyframeSequence::STEP}) {
+        const bool quaternion = interpolation == KeyframeSequence::SLERP || interpolation == KeyframeSequence::SQUAD;
+        const int property = quaternion ? AnimationTrack::ORIENTATION : AnimationTrack::TRANSLATION;
+        const std::vector<float> changedKey = quaternion ? std::vector<float>{0, 0, 0.6f, 0.8f} : std::vector<float>{4, 4, 4};
+        // Each change after the used group has been animated, then both
+        // groups compared, the used one against one never animated.
+        const std::vector<std::function<void(KeyframeSequence&)>> changes = {
+            [&](KeyframeSequence& s) { s.setKeyframe(1, 100, changedKey); },
+            [&](KeyframeSequence& s) { s.setKeyframe(2, 150, changedKey); },  // a new time, too
+            [](KeyframeSequence& s) { s.setValidRange(1, 3); },
+            [](KeyframeSequence& s) { s.setDuration(520); },
+            [](KeyframeSequence& s) { s.setRepeatMode(KeyframeSequence::CONSTANT); },
+        };
+        for (std::size_t c = 0; c < changes.size(); ++c) {
+            Ref<Group> used = make<Group>(), fresh = make<Group>();
+            Ref<AnimationController> controller = make<AnimationController>();
+            Ref<KeyframeSequence> usedSeq = sequence(interpolation, quaternion ? quats : points);
+            Ref<KeyframeSequence> freshSeq = sequence(interpolation, quaternion ? quats : points);
+            attach(*used, usedSeq, property, controller);
+            attach(*fresh, freshSeq, property, controller);
+            std::vector<std::array<float, 4>> before;
+            for (int t = 0; t < 700; t += 37) {
+                used->animate(t);
+                std::array<float, 4> v{};
+                quaternion ? used->getOrientation(v) : used->getTranslation(std::span(v.data(), 3));
+                before.push_back(v);
+            }
+            changes[c](*usedSeq);
+            changes[c](*freshSeq);
+            bool differs = false;
+            std::size_t i = 0;
+            for (int t = 0; t < 700; t += 37, ++i) {
+                ASSERT_EQ(used->animate(t), fresh->animate(t)) << "interpolation " << interpolation << ", change " << c;
+                std::array<float, 4> u{}, f{};
+                if (quaternion) {
+                    used->getOrientation(u);
+                    fresh->getOrientation(f);
+                } else {
+                    used->getTranslation(std::span(u.data(), 3));
+                    fresh->getTranslation(std::span(f.data(), 3));
+                }
+                ASSERT_EQ(u, f) << "interpolation " << interpolation << ", change " << c << ", time " << t;
+                differs = differs || u != before[i];
+            }
+            EXPECT_TRUE(differs) << "interpolation " << interpolation << ", change " << c << " changed nothing";
+        }
+    }
+}
+
+// A sequence that becomes unsampleable after animate() has kept its view
+// throws at the next animate(), and at every one until it is fixed.
+TEST(AnimationPlan, SequenceMadeInvalidAfterAnimateThrows) {
+    Ref<Group> g = make<Group>();
+    Ref<KeyframeSequence> s = moves();
+    attach(*g, s, AnimationTrack::TRANSLATION, make<AnimationController>());
+    g->animate(10);
+    const float key[] = {1, 1, 1};
+    s->setKeyframe(1, 450, key);  // after key 2 (time 200): times decrease
+    EXPECT_THROW(g->animate(20), IllegalStateException);
+    EXPECT_THROW(g->animate(30), IllegalStateException);
+    s->setKeyframe(1, 150, key);
+    EXPECT_NO_THROW(g->animate(150));
+    float t[3];
+    g->getTranslation(t);
+    EXPECT_EQ(t[0], 1.0f);  // key 1's value, at its time
+}
+
+// SPLINE through animate(), against the Hermite curve of JSR-184 1.1,
+// KeyframeSequence worked by hand: tangents T_out(i) = F+(i) (p(i+1) -
+// p(i-1)) / 2 and T_in(i) = F-(i) (p(i+1) - p(i-1)) / 2 with F+(i) =
+// 2 d(i) / (d(i-1) + d(i)), F-(i) = 2 d(i-1) / (d(i-1) + d(i)), d(i) the
+// length of the segment starting at key i. The tangents are kept per change
+// of the sequence: each setter below must recompute them.
+TEST(AnimationPlan, SplineTangentsFollowEveryChangeByHand) {
+    // x only; keys 0, 10, 30, 20 at times 0, 10, 20, 30, looping over 40.
+    Ref<KeyframeSequence> s = make<KeyframeSequence>(4, 3, KeyframeSequence::SPLINE);
+    const float p[4] = {0, 10, 30, 20};
+    for (int k = 0; k < 4; ++k) {
+        const float v[3] = {p[k], 0, 0};
+        s->setKeyframe(k, 10 * k, v);
+    }
+    s->setDuration(40);
+    s->setRepeatMode(KeyframeSequence::LOOP);
+    Ref<Group> g = make<Group>();
+    attach(*g, s, AnimationTrack::TRANSLATION, make<AnimationController>());
+    auto xAt = [&](int t) {
+        g->animate(t);
+        float v[3];
+        g->getTranslation(v);
+        return v[0];
+    };
+    // Hermite basis at u = 1/2: h00 = h01 = 1/2, h10 = 1/8, h11 = -1/8.
+    // Time 5, segment 0 -> 1, uniform spacing (F = 1): T_out(0) = (10 - 20)/2
+    // = -5, T_in(1) = (30 - 0)/2 = 15: 5 - 5/8 - 15/8 = 2.5.
+    EXPECT_NEAR(xAt(5), 2.5f, 1e-5f);
+    // Key 2 moved to 50: T_in(1) = 25: 5 - 5/8 - 25/8 = 1.25.
+    const float v2[3] = {50, 0, 0};
+    s->setKeyframe(2, 20, v2);
+    EXPECT_NEAR(xAt(5), 1.25f, 1e-5f);
+    // Duration 60: the wrap segment 3 -> 0 is 30 long, so F+(0) = 2 * 10 /
+    // (30 + 10) = 1/2 and T_out(0) = -2.5; F-(1) stays 1: 5 - 2.5/8 - 25/8 =
+    // 1.5625.
+    s->setDuration(60);
+    EXPECT_NEAR(xAt(5), 1.5625f, 1e-5f);
+    // Valid range 1..3 (times 10, 20, 30; the wrap 30 -> 10 + 60 is 40 long).
+    // Time 15, segment key 1 -> key 2 (10 -> 50), before it key 3 (20),
+    // after it key 3 again: F+(1) = 2 * 10 / (40 + 10) = 0.4, T_out(1) = 0.4
+    // (50 - 20)/2 = 6; F-(2) = 1, T_in(2) = (20 - 10)/2 = 5:
+    // 30 + 6/8 - 5/8 = 30.125.
+    s->setValidRange(1, 3);
+    EXPECT_NEAR(xAt(15), 30.125f, 1e-5f);
+    // CONSTANT: the end keys' outer tangents are 0 (F = 0 at the ends). Time
+    // 15 is segment 1 -> 2 again, T_out(1) = 0 (key 1 is the first),
+    // T_in(2) = 5: 30 - 5/8 = 29.375.
+    s->setRepeatMode(KeyframeSequence::CONSTANT);
+    EXPECT_NEAR(xAt(15), 29.375f, 1e-5f);
+}

@@ -433,3 +433,77 @@ TEST(KeyframeSampler, SlerpArcsCachedGiveTheSameBitsAndFollowChanges) {
     s->setValidRange(1, 3);
     expectSameBits("after setValidRange");
 }
+
+// Looping time is mapped without fmod (a quotient from the kept reciprocal
+// of the duration, corrected by one either way): the same bits as the fmod
+// mapping, at fractional, negative, huge times and times a rounding away
+// from a multiple of the duration, with and without the reciprocal, for a
+// valid range that starts after time 0 too.
+TEST(KeyframeSampler, LoopMappingGivesFmodsBits) {
+    auto s = makeSeq(KeyframeSequence::LINEAR, KeyframeSequence::LOOP, 97,
+                     {{3, {1.0f, -2.0f}}, {40, {7.5f, 3.25f}}, {41, {-4.0f, 0.5f}}, {90, {2.0f, 9.0f}}});
+    auto fmodTime = [](double time, double duration, double first) {  // the fmod mapping
+        double m = std::fmod(time, duration);
+        if (m < 0.0) m += duration;
+        if (m < first) m += duration;
+        return m;
+    };
+    std::vector<double> times;
+    for (double t = -1000.0; t <= 1000.0; t += 0.37) times.push_back(t);
+    for (double k : {-1e11, -12345.0, -3.0, -1.0, 1.0, 2.0, 3.0, 1e6, 123456789.0, 1e10, 1.13e10, 1.14e10, 3e12, 1e20})
+        for (double e : {0.0, 1e-9, -1e-9, 1e-30, -1e-30, 0.5, -0.5})
+            times.push_back(k * 97.0 + e);
+    for (double t : {-1e-30, 1e-300, 0x1p40 - 0.5, 0x1p40, -0x1p40 + 0.5, -0x1p40}) times.push_back(t);
+    for (int first : {0, 1}) {
+        s->setValidRange(first, 3);
+        s->validate();
+        const detail::KeyframeView kept = detail::viewOf(*s);
+        ASSERT_GT(kept.inverseDuration, 0.0);
+        detail::KeyframeView divided = kept;
+        divided.inverseDuration = 0.0;
+        const double firstTime = first == 0 ? 3.0 : 40.0;
+        for (double t : times) {
+            float a[2], b[2], c[2];
+            detail::sampleKeyframes(kept, t, a);
+            detail::sampleKeyframes(divided, t, b);
+            detail::sampleKeyframes(kept, fmodTime(t, 97.0, firstTime), c);
+            for (int i = 0; i < 2; ++i) {
+                ASSERT_EQ(a[i], c[i]) << "time " << t << ", first key " << first << ", component " << i;
+                ASSERT_EQ(b[i], c[i]) << "time " << t << ", first key " << first << ", component " << i;
+            }
+        }
+    }
+}
+
+// SPLINE tangents kept per change of the sequence (splineTangents, as
+// animate() samples) agree with computing them per sample to their float
+// rounding, and every kind of change refreshes them.
+TEST(KeyframeSampler, SplineTangentsCachedAgreeAndFollowChanges) {
+    auto s = makeSeq(KeyframeSequence::SPLINE, KeyframeSequence::LOOP, 100,
+                     {{0, {0, 1, -3}}, {15, {2, 0.5f, 4}}, {40, {-7, 3, 0}}, {70, {5, -1, 2}}, {90, {1, 8, -6}}});
+    auto expectAgree = [&](const char* what) {
+        s->validate();
+        const detail::KeyframeView perSample = detail::viewOf(*s);
+        detail::KeyframeView cached = perSample;
+        cached.tangents = s->splineTangents();
+        ASSERT_FALSE(cached.tangents.empty()) << what;
+        for (double t = -30.0; t <= 230.0; t += 1.3) {
+            float a[3], b[3];
+            detail::sampleKeyframes(perSample, t, a);
+            detail::sampleKeyframes(cached, t, b);
+            for (int c = 0; c < 3; ++c) ASSERT_NEAR(a[c], b[c], 2e-6f) << what << ", time " << t << ", component " << c;
+        }
+    };
+    expectAgree("loop");
+    const float v[3] = {9, -9, 9};
+    s->setKeyframe(2, 45, v);
+    expectAgree("after setKeyframe");
+    s->setValidRange(1, 3);
+    expectAgree("after setValidRange");
+    s->setDuration(130);
+    expectAgree("after setDuration");
+    s->setRepeatMode(KeyframeSequence::CONSTANT);
+    expectAgree("after setRepeatMode");
+    auto linear = makeSeq(KeyframeSequence::LINEAR, KeyframeSequence::LOOP, 10, {{0, {1}}, {5, {2}}});
+    EXPECT_TRUE(linear->splineTangents().empty());
+}
