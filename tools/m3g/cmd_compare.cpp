@@ -6,7 +6,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "CliArgs.h"
 #include "Commands.h"
@@ -32,6 +34,19 @@ double nonNegative(const char* name, const std::string& v, double fallback) {
     return d;
 }
 
+// The two images of a comparison, or nothing after printing the FAIL verdict
+// for images of different sizes. The --diff name is checked first, so a bad
+// one is refused before the work.
+std::optional<std::pair<RgbaImage, RgbaImage>> readSameSize(const CompareArgs& args) {
+    if (!args.diff.empty()) imageFormatFor(args.diff);
+    RgbaImage ia = readPngInput(args.a), ib = readPngInput(args.b);
+    if (ia.width != ib.width || ia.height != ib.height) {
+        std::printf("FAIL: the images differ in size: %dx%d and %dx%d\n", ia.width, ia.height, ib.width, ib.height);
+        return std::nullopt;
+    }
+    return std::pair{std::move(ia), std::move(ib)};
+}
+
 int compareCoverageOf(const CompareArgs& args) {
     // Colour limits mean nothing here: refused rather than silently ignored.
     if (!args.threshold.empty() || !args.minPsnr.empty())
@@ -45,12 +60,9 @@ int compareCoverageOf(const CompareArgs& args) {
     const double maxShare = nonNegative("--max-share", args.maxShare, 0.01);
     const double minIou = nonNegative("--min-iou", args.minIou, 0.0);
     if (minIou > 1.0) throw CliError("--min-iou takes a number in [0, 1], not '" + args.minIou + "'");
-    if (!args.diff.empty()) imageFormatFor(args.diff);  // refused before the work
-    const RgbaImage ia = readPngInput(args.a), ib = readPngInput(args.b);
-    if (ia.width != ib.width || ia.height != ib.height) {
-        std::printf("FAIL: the images differ in size: %dx%d and %dx%d\n", ia.width, ia.height, ib.width, ib.height);
-        return kExitMismatch;
-    }
+    const auto images = readSameSize(args);
+    if (!images) return kExitMismatch;
+    const auto& [ia, ib] = *images;
     const CoverageComparison c = compareCoverage(ia, ib, key);
     std::printf("%s", coverageReport(c, key, maxShare, minIou).c_str());
     if (!args.diff.empty()) writeImage(args.diff, coverageDiffImage(ia, ib, key), false);
@@ -68,12 +80,9 @@ int compare(const CompareArgs& args) {
     }
     const double maxShare = nonNegative("--max-share", args.maxShare, 0.01);
     const double minPsnr = nonNegative("--min-psnr", args.minPsnr, 0.0);
-    if (!args.diff.empty()) imageFormatFor(args.diff);  // refused before the work
-    const RgbaImage ia = readPngInput(args.a), ib = readPngInput(args.b);
-    if (ia.width != ib.width || ia.height != ib.height) {
-        std::printf("FAIL: the images differ in size: %dx%d and %dx%d\n", ia.width, ia.height, ib.width, ib.height);
-        return kExitMismatch;
-    }
+    const auto images = readSameSize(args);
+    if (!images) return kExitMismatch;
+    const auto& [ia, ib] = *images;
     const Comparison c = compareImages(ia, ib, threshold);
     std::printf("%s", comparisonReport(c, threshold, maxShare, minPsnr).c_str());
     if (!args.diff.empty()) writeImage(args.diff, diffImage(ia, ib, threshold), false);
