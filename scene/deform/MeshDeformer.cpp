@@ -329,7 +329,11 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         job.runs = partial ? movedRuns(partition_.compactRuns(c), partition_.compactBones(), stride, c, entryChanged_,
                                        movedRuns_)
                            : partition_.compactRuns(c);
-        if (job.vertices.empty() && job.runs.empty()) continue;
+        // A bone run's vertices share its bones: it moved with them.
+        job.boneRuns = partial ? movedRuns(partition_.compactBoneRuns(c), partition_.compactBones(), stride, c,
+                                           entryChanged_, movedBoneRuns_)
+                               : partition_.compactBoneRuns(c);
+        if (job.vertices.empty() && job.runs.empty() && job.boneRuns.empty()) continue;
         job.vertexCount = partition_.compactOrder().size();
         job.boneIndices = partition_.compactBones();
         job.boneWeights = partition_.compactWeights();

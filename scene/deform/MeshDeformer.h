@@ -146,7 +146,7 @@ private:
     // Per bone, whether its palette entry differs from the last call's (a
     // frame that keeps out_ recomputes only the runs of changed bones).
     std::vector<std::uint8_t> entryChanged_;
-    std::vector<skin::InfluenceRun> movedRuns_;  // scratch: those runs
+    std::vector<skin::InfluenceRun> movedRuns_, movedBoneRuns_;  // scratch: those runs
 
     // ---- MorphingMesh: base then targets, per attribute, as floats ----
     struct MorphAttribute {

@@ -15,16 +15,26 @@ bool cpuHasAvx2Fma() noexcept {
     return false;
 #endif
 }
-/// The most Auto may pick: M3G_SKIN_ISA=scalar or sse2 holds it below the
-/// best path (to run a whole program, the renderer's deformation included,
-/// on the SSE2 or plain kernels); unset or anything else, no limit. Read once.
+bool cpuHasAvx512() noexcept {
+#if defined(__x86_64__) || defined(__i386__)
+    // Also checks that the OS saves the ZMM and mask state.
+    static const bool has = cpuHasAvx2Fma() && __builtin_cpu_supports("avx512f");
+    return has;
+#else
+    return false;
+#endif
+}
+/// The most Auto may pick: M3G_SKIN_ISA=scalar, sse2 or avx2 holds it below
+/// the best path (to run a whole program, the renderer's deformation
+/// included, on those kernels); unset or anything else, no limit. Read once.
 Isa autoLimit() noexcept {
     static const Isa limit = [] {
         const char* value = std::getenv("M3G_SKIN_ISA");
         const std::string_view v = value ? value : "";
         if (v == "scalar") return Isa::Scalar;
         if (v == "sse2") return Isa::Sse2;
-        return Isa::Avx2;
+        if (v == "avx2") return Isa::Avx2;
+        return Isa::Avx512;
     }();
     return limit;
 }
@@ -40,6 +50,7 @@ bool isaSupported(Isa isa) noexcept {
         case Isa::Sse2: return false;
 #endif
         case Isa::Avx2: return cpuHasAvx2Fma();
+        case Isa::Avx512: return cpuHasAvx512();
     }
     return false;
 }
@@ -47,7 +58,8 @@ bool isaSupported(Isa isa) noexcept {
 Isa resolveIsa(Isa isa) noexcept {
     if (isa != Isa::Auto) return isa;
     const Isa limit = autoLimit();
-    if (limit == Isa::Avx2 && isaSupported(Isa::Avx2)) return Isa::Avx2;
+    if (limit == Isa::Avx512 && isaSupported(Isa::Avx512)) return Isa::Avx512;
+    if ((limit == Isa::Avx2 || limit == Isa::Avx512) && isaSupported(Isa::Avx2)) return Isa::Avx2;
     if (limit != Isa::Scalar && isaSupported(Isa::Sse2)) return Isa::Sse2;
     return Isa::Scalar;
 }
@@ -58,6 +70,7 @@ const char* isaName(Isa isa) noexcept {
         case Isa::Scalar: return "scalar";
         case Isa::Sse2: return "sse2";
         case Isa::Avx2: return "avx2";
+        case Isa::Avx512: return "avx512";
     }
     return "?";
 }

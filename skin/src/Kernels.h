@@ -32,6 +32,14 @@ void skinAvx2(const SkinningJob& job, std::size_t begin, std::size_t end) noexce
 /// cases they do not cover: no normals, or no influence.
 bool skinRunsAvx2(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept;
 bool skinRunsSse2(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept;
+/// The same sixteen lanes at a time (Isa::Avx512), for packed arrays
+/// (strides 3) only: false (nothing done) otherwise, as skinRunsAvx2.
+bool skinRunsAvx512(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept;
+/// Positions [begin, end) of a validated job's bone-run sequence, sixteen
+/// lanes at a time: the run's palette entries weighted per lane. False
+/// (nothing done) for what it does not cover: no normals, no influence,
+/// other strides than 3.
+bool skinBoneRunsAvx512(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept;
 /// Elements [begin, end) of a validated MorphJob; with job.normalize, each
 /// xyz triple renormalised before it is stored (four or eight lanes at a
 /// time; the last triples in a padded block, through the same lane

@@ -13,7 +13,8 @@ void runRange(const MorphJob& job, Isa isa, std::size_t begin, std::size_t end) 
 #ifdef M3G_SKIN_X86
         // The SIMD paths renormalise each block before storing it.
         case Isa::Sse2: detail::morphSse2(job, begin, end); return;
-        case Isa::Avx2: detail::morphAvx2(job, begin, end); return;
+        case Isa::Avx2:
+        case Isa::Avx512: detail::morphAvx2(job, begin, end); return;
 #endif
         default:
             detail::morphScalar(job, begin, end);

@@ -18,7 +18,8 @@ bool PaletteJob::run() const noexcept {
     if (!validate()) return false;
 #ifdef M3G_SKIN_X86
     switch (resolveIsa(isa)) {
-        case Isa::Avx2: detail::paletteAvx2(*this); return true;
+        case Isa::Avx2:
+        case Isa::Avx512: detail::paletteAvx2(*this); return true;
         case Isa::Sse2: detail::paletteSse2(*this); return true;
         default: break;
     }

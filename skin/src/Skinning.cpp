@@ -22,7 +22,8 @@ void runRange(const SkinningJob& job, Isa isa, std::size_t begin, std::size_t en
     switch (isa) {
 #ifdef M3G_SKIN_X86
         case Isa::Sse2: detail::skinSse2(job, begin, end); return;
-        case Isa::Avx2: detail::skinAvx2(job, begin, end); return;
+        case Isa::Avx2:
+        case Isa::Avx512: detail::skinAvx2(job, begin, end); return;  // the list: AVX2
 #endif
         default: detail::skinScalar(job, begin, end); return;
     }
@@ -46,9 +47,11 @@ bool checkRuns(std::span<const InfluenceRun> runs, std::uint64_t bound, std::siz
     return true;
 }
 
-/// validate()'s checks; `runVertices` receives the runs' vertex count.
-bool check(const SkinningJob& j, std::size_t* runVertices) noexcept {
+/// validate()'s checks; `runVertices` and `boneRunVertices` receive the
+/// runs' and the bone runs' vertex counts.
+bool check(const SkinningJob& j, std::size_t* runVertices, std::size_t* boneRunVertices) noexcept {
     *runVertices = 0;
+    *boneRunVertices = 0;
     if (j.influenceCount < 0 || j.influenceStride < j.influenceCount) return false;
     if (!isaSupported(j.isa)) return false;
     if (!holds(j.inPositions, j.vertexCount, j.inPositionStride)) return false;
@@ -69,6 +72,7 @@ bool check(const SkinningJob& j, std::size_t* runVertices) noexcept {
     const std::uint64_t bound = limit;
     // Runs: inside the arrays, `start` the running sum.
     if (!checkRuns(j.runs, bound, runVertices)) return false;
+    if (!checkRuns(j.boneRuns, bound, boneRunVertices)) return false;
     if (j.vertices.empty()) return true;
     // The list: one pass, branch-free.
     const std::uint32_t* v = j.vertices.data();
@@ -88,18 +92,17 @@ bool check(const SkinningJob& j, std::size_t* runVertices) noexcept {
     return !(bad0 | bad1 | bad2 | bad3);
 }
 
-/// Positions [begin, end) of the job's run sequence.
-void runRuns(const SkinningJob& job, Isa isa, std::size_t begin, std::size_t end) noexcept {
-#ifdef M3G_SKIN_X86
-    if (isa == Isa::Avx2 && detail::skinRunsAvx2(job, begin, end)) return;
-    if (isa == Isa::Sse2 && detail::skinRunsSse2(job, begin, end)) return;
-#endif
-    // The scalar path, and runs without normals: each run as a vertex list, a stack buffer at a time (each
-    // vertex of a valid run has the run's slots, which these paths read).
+/// Positions [begin, end) of `runs` (the job's runs or bone runs) as vertex
+/// lists, a stack buffer at a time, on the list kernels: the scalar path,
+/// and what the SIMD run kernels do not cover (each vertex of a valid run
+/// has the run's slots, or for a bone run its bones, which these paths read).
+void runsAsLists(const SkinningJob& job, std::span<const InfluenceRun> runs, Isa isa, std::size_t begin,
+                 std::size_t end) noexcept {
     std::uint32_t list[256];
     SkinningJob sub = job;
     sub.runs = {};
-    detail::RunPieces pieces(job.runs, begin, end);
+    sub.boneRuns = {};
+    detail::RunPieces pieces(runs, begin, end);
     std::size_t runFirst, first, count;
     while (pieces.next(runFirst, first, count)) {
         for (std::size_t done = 0; done < count;) {
@@ -112,48 +115,73 @@ void runRuns(const SkinningJob& job, Isa isa, std::size_t begin, std::size_t end
     }
 }
 
+/// Positions [begin, end) of the job's run sequence.
+void runRuns(const SkinningJob& job, Isa isa, std::size_t begin, std::size_t end) noexcept {
+#ifdef M3G_SKIN_X86
+    if (isa == Isa::Avx512 && detail::skinRunsAvx512(job, begin, end)) return;
+    if ((isa == Isa::Avx2 || isa == Isa::Avx512) && detail::skinRunsAvx2(job, begin, end)) return;
+    if (isa == Isa::Sse2 && detail::skinRunsSse2(job, begin, end)) return;
+#endif
+    runsAsLists(job, job.runs, isa, begin, end);
+}
+
+/// Positions [begin, end) of the job's bone-run sequence.
+void runBoneRuns(const SkinningJob& job, Isa isa, std::size_t begin, std::size_t end) noexcept {
+#ifdef M3G_SKIN_X86
+    if (isa == Isa::Avx512 && detail::skinBoneRunsAvx512(job, begin, end)) return;
+#endif
+    runsAsLists(job, job.boneRuns, isa, begin, end);
+}
+
 }  // namespace
 
 bool SkinningJob::validate() const noexcept {
-    std::size_t runVertices;
-    return check(*this, &runVertices);
+    std::size_t runVertices, boneRunVertices;
+    return check(*this, &runVertices, &boneRunVertices);
 }
 
 bool SkinningJob::run() const noexcept {
-    std::size_t runVertices;
-    if (!check(*this, &runVertices)) return false;
+    std::size_t runVertices, boneRunVertices;
+    if (!check(*this, &runVertices, &boneRunVertices)) return false;
     const Isa resolved = resolveIsa(isa);
     if (!vertices.empty()) runRange(*this, resolved, 0, vertices.size());
     if (runVertices > 0) runRuns(*this, resolved, 0, runVertices);
+    if (boneRunVertices > 0) runBoneRuns(*this, resolved, 0, boneRunVertices);
     return true;
 }
 
 bool SkinningJob::runParallel(ThreadPool& pool, std::size_t grain) const noexcept {
-    std::size_t runVertices;
-    if (!check(*this, &runVertices)) return false;
+    std::size_t runVertices, boneRunVertices;
+    if (!check(*this, &runVertices, &boneRunVertices)) return false;
     if (grain == 0) grain = 1;
+    // Chunks of the list, then of the runs, then of the bone runs: a chunk
+    // never mixes two of them.
     struct Context {
         const SkinningJob* job;
         Isa isa;
         std::size_t grain;
-        std::size_t listChunks;
-        std::size_t listTotal;
-        std::size_t runTotal;
-    } context{this, resolveIsa(isa), grain, (vertices.size() + grain - 1) / grain, vertices.size(), runVertices};
-    // List chunks first, then run chunks: a chunk never mixes the two.
-    const std::size_t chunks = context.listChunks + (runVertices + grain - 1) / grain;
+        std::size_t total[3];   // list, runs, bone runs
+        std::size_t chunks[3];  // chunks of each
+    } context{this, resolveIsa(isa), grain, {vertices.size(), runVertices, boneRunVertices}, {}};
+    std::size_t chunks = 0;
+    for (int part = 0; part < 3; ++part) {
+        context.chunks[part] = (context.total[part] + grain - 1) / grain;
+        chunks += context.chunks[part];
+    }
     pool.run(
         chunks,
         [](void* c, std::size_t chunk) {
             const auto& ctx = *static_cast<const Context*>(c);
-            const bool list = chunk < ctx.listChunks;
-            const std::size_t total = list ? ctx.listTotal : ctx.runTotal;
-            const std::size_t begin = (list ? chunk : chunk - ctx.listChunks) * ctx.grain;
-            const std::size_t end = begin + ctx.grain < total ? begin + ctx.grain : total;
-            if (list)
+            int part = 0;
+            while (chunk >= ctx.chunks[part]) chunk -= ctx.chunks[part++];
+            const std::size_t begin = chunk * ctx.grain;
+            const std::size_t end = std::min(begin + ctx.grain, ctx.total[part]);
+            if (part == 0)
                 runRange(*ctx.job, ctx.isa, begin, end);
-            else
+            else if (part == 1)
                 runRuns(*ctx.job, ctx.isa, begin, end);
+            else
+                runBoneRuns(*ctx.job, ctx.isa, begin, end);
         },
         &context);
     return true;
@@ -224,12 +252,16 @@ void InfluencePartition::buildCompact(std::span<const std::int32_t> boneIndices,
     compactBones_.clear();
     compactWeights_.clear();
     compactRuns_.clear();
+    compactBoneRuns_.clear();
     compactLoose_.clear();
     compactRunOffsets_.assign(offsets_.size(), 0);
+    compactBoneRunOffsets_.assign(offsets_.size(), 0);
     compactLooseOffsets_.assign(offsets_.size(), 0);
     std::vector<std::uint32_t>& sorted = cursorScratch_;
+    std::vector<std::uint32_t>& setLoose = looseScratch_;
     for (std::size_t c = 1; c + 1 < offsets_.size(); ++c) {
         compactRunOffsets_[c] = compactRuns_.size();
+        compactBoneRunOffsets_[c] = compactBoneRuns_.size();
         compactLooseOffsets_[c] = compactLoose_.size();
         if (!weights) continue;
         const std::span<const std::uint32_t> group = loose(static_cast<int>(c));
@@ -251,8 +283,11 @@ void InfluencePartition::buildCompact(std::span<const std::int32_t> boneIndices,
                 }
             return a < b;
         });
+        auto sameBones = [&](std::uint32_t a, std::uint32_t b) {
+            return std::memcmp(&boneIndices[a * ns], &boneIndices[b * ns], c * sizeof(std::int32_t)) == 0;
+        };
         auto same = [&](std::uint32_t a, std::uint32_t b) {
-            return std::memcmp(&boneIndices[a * ns], &boneIndices[b * ns], c * sizeof(std::int32_t)) == 0 &&
+            return sameBones(a, b) &&
                    std::memcmp(&boneWeights[a * ns], &boneWeights[b * ns], c * sizeof(float)) == 0;
         };
         auto append = [&](std::uint32_t v) {
@@ -263,24 +298,43 @@ void InfluencePartition::buildCompact(std::span<const std::int32_t> boneIndices,
                                    boneWeights.begin() + static_cast<std::ptrdiff_t>(v * ns + ns));
             return static_cast<std::uint32_t>(compactOrder_.size() - 1);
         };
-        // Equal slots are now neighbours: runs of kMinRun or more, the
-        // rest loose (consecutive in the compact arrays).
-        std::uint32_t start = 0;
+        // One set of bones at a time: equal slots are neighbours, runs of
+        // kMinRun or more go first; the other vertices of the set follow,
+        // consecutive, as one bone run when there are kMinRun or more,
+        // else loose.
+        std::uint32_t runStart = 0, boneRunStart = 0;
         for (std::size_t i = 0; i < sorted.size();) {
-            std::size_t e = i + 1;
-            while (e < sorted.size() && same(sorted[i], sorted[e])) ++e;
-            if (e - i >= kMinRun) {
-                const std::uint32_t first = append(sorted[i]);
-                for (std::size_t q = i + 1; q < e; ++q) append(sorted[q]);
-                compactRuns_.push_back({first, static_cast<std::uint32_t>(e - i), start});
-                start += static_cast<std::uint32_t>(e - i);
-            } else {
-                for (std::size_t q = i; q < e; ++q) compactLoose_.push_back(append(sorted[q]));
+            std::size_t setEnd = i + 1;
+            while (setEnd < sorted.size() && sameBones(sorted[i], sorted[setEnd])) ++setEnd;
+            setLoose.clear();
+            for (std::size_t q = i; q < setEnd;) {
+                std::size_t e = q + 1;
+                while (e < setEnd && same(sorted[q], sorted[e])) ++e;
+                if (e - q >= kMinRun) {
+                    const std::uint32_t first = append(sorted[q]);
+                    for (std::size_t r = q + 1; r < e; ++r) append(sorted[r]);
+                    compactRuns_.push_back({first, static_cast<std::uint32_t>(e - q), runStart});
+                    runStart += static_cast<std::uint32_t>(e - q);
+                } else {
+                    setLoose.insert(setLoose.end(), sorted.begin() + static_cast<std::ptrdiff_t>(q),
+                                    sorted.begin() + static_cast<std::ptrdiff_t>(e));
+                }
+                q = e;
             }
-            i = e;
+            if (setLoose.size() >= kMinRun) {
+                const std::uint32_t first = append(setLoose[0]);
+                for (std::size_t r = 1; r < setLoose.size(); ++r) append(setLoose[r]);
+                const auto count = static_cast<std::uint32_t>(setLoose.size());
+                compactBoneRuns_.push_back({first, count, boneRunStart});
+                boneRunStart += count;
+            } else {
+                for (std::uint32_t v : setLoose) compactLoose_.push_back(append(v));
+            }
+            i = setEnd;
         }
     }
     compactRunOffsets_.back() = compactRuns_.size();
+    compactBoneRunOffsets_.back() = compactBoneRuns_.size();
     compactLooseOffsets_.back() = compactLoose_.size();
 }
 
@@ -289,6 +343,13 @@ std::span<const InfluenceRun> InfluencePartition::compactRuns(int count) const n
     const auto c = static_cast<std::size_t>(count);
     return std::span<const InfluenceRun>(compactRuns_)
         .subspan(compactRunOffsets_[c], compactRunOffsets_[c + 1] - compactRunOffsets_[c]);
+}
+
+std::span<const InfluenceRun> InfluencePartition::compactBoneRuns(int count) const noexcept {
+    if (count < 0 || static_cast<std::size_t>(count) + 1 >= compactBoneRunOffsets_.size()) return {};
+    const auto c = static_cast<std::size_t>(count);
+    return std::span<const InfluenceRun>(compactBoneRuns_)
+        .subspan(compactBoneRunOffsets_[c], compactBoneRunOffsets_[c + 1] - compactBoneRunOffsets_[c]);
 }
 
 std::span<const std::uint32_t> InfluencePartition::compactLoose(int count) const noexcept {

@@ -66,7 +66,8 @@ void skinArgs(benchmark::internal::Benchmark* b) {
     for (std::int64_t v : {100, 350, 500, 1200, 10000, 100000, 1000000}) {
         const std::int64_t bones = v <= 1200 ? 20 : 60;
         for (std::int64_t k = 1; k <= 4; ++k)
-            for (Variant var : {Variant::Baseline, Variant::Scalar, Variant::Sse2, Variant::Avx2, Variant::Parallel}) {
+            for (Variant var : {Variant::Baseline, Variant::Scalar, Variant::Sse2, Variant::Avx2, Variant::Avx512,
+                                Variant::Parallel}) {
                 // The baseline searches the whole record list per vertex:
                 // O(V^2); at 1M vertices one frame would take minutes.
                 if (var == Variant::Baseline && v > 100000) continue;
@@ -96,7 +97,7 @@ BENCHMARK(BM_SkinRunLength)
                    {1, 4},
                    {1, 4, 13, 16, 23, 256},
                    {static_cast<std::int64_t>(Variant::Sse2), static_cast<std::int64_t>(Variant::Avx2),
-                    static_cast<std::int64_t>(Variant::Parallel)}})
+                    static_cast<std::int64_t>(Variant::Avx512), static_cast<std::int64_t>(Variant::Parallel)}})
     ->Unit(benchmark::kMicrosecond)
     ->UseRealTime();
 

@@ -16,7 +16,7 @@ using namespace m3g::skin;
 
 namespace {
 
-const std::vector<Isa> kPaths{Isa::Scalar, Isa::Sse2, Isa::Avx2};
+const std::vector<Isa> kPaths{Isa::Scalar, Isa::Sse2, Isa::Avx2, Isa::Avx512};
 
 #define SKIP_IF_UNSUPPORTED(isa) \
     if (!isaSupported(isa)) GTEST_SKIP() << isaName(isa) << " not supported by this CPU"

@@ -426,6 +426,8 @@ TEST(ObjectDump, SkinnedMeshBonesAndSkeleton) {
     // The compact space: v0, v1 (lower) and v2 (both), too few to share a run.
     EXPECT_EQ(layout.at("compactRuns").get<int>(), 0);
     EXPECT_EQ(layout.at("compactRunVertices").get<int>(), 0);
+    EXPECT_EQ(layout.at("compactBoneRuns").get<int>(), 0);
+    EXPECT_EQ(layout.at("compactBoneRunVertices").get<int>(), 0);
     EXPECT_EQ(layout.at("compactLooseVertices").get<int>(), 3);
 }
 

@@ -170,7 +170,7 @@ TEST(SkinPalette, SimdPathsAgreeWithPlainLoop) {
     PaletteJob job = paletteJob(bones, a, r, plain);
     job.isa = Isa::Scalar;
     ASSERT_TRUE(job.run());
-    for (Isa isa : {Isa::Sse2, Isa::Avx2}) {
+    for (Isa isa : {Isa::Sse2, Isa::Avx2, Isa::Avx512}) {
         if (!isaSupported(isa)) continue;
         SCOPED_TRACE(m3g::skin::isaName(isa));
         std::vector<PaletteEntry> simd(bones);
@@ -196,7 +196,7 @@ TEST(SkinPalette, SimdPathsAgreeWithPlainLoop) {
 TEST(SkinPalette, PositionScaleAndBiasFoldIntoThePositionRows) {
     const Mat a{0, -1, 0, 1, 1, 0, 0, 2, 0, 0, 1, 3, 0, 0, 0, 1};
     const Mat r = translation(0, 0, 1);
-    for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2}) {
+    for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2, Isa::Avx512}) {
         if (!isaSupported(isa)) continue;
         SCOPED_TRACE(m3g::skin::isaName(isa));
         // Two bones (the AVX2 path's pair): m, then the identity.

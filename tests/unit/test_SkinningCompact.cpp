@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <map>
 #include <random>
 #include <set>
 #include <string>
@@ -20,11 +21,11 @@ using namespace m3g::skin;
 
 namespace {
 
-const Isa kIsas[] = {Isa::Scalar, Isa::Sse2, Isa::Avx2};
+const Isa kIsas[] = {Isa::Scalar, Isa::Sse2, Isa::Avx2, Isa::Avx512};
 
 /// What MeshDeformer does: each group's mesh-order runs (and group 0's
-/// vertices) in place, the compact space's runs and loose positions in
-/// compact arrays, then every compact output written to its mesh vertex
+/// vertices) in place, the compact space's runs, bone runs and loose
+/// positions in compact arrays, then every compact output written to its mesh vertex
 /// (scatterXyz). Outputs start as a sentinel.
 void skinCompact(const m3gtest::RandomMesh& m, const std::vector<PaletteEntry>& pal, Isa isa,
                  std::vector<float>& pos, std::vector<float>& nrm, ThreadPool* pool = nullptr,
@@ -50,6 +51,7 @@ void skinCompact(const m3gtest::RandomMesh& m, const std::vector<PaletteEntry>& 
         SkinningJob cj = job;
         cj.vertices = part.compactLoose(c);
         cj.runs = part.compactRuns(c);
+        cj.boneRuns = part.compactBoneRuns(c);
         cj.vertexCount = order.size();
         cj.boneIndices = part.compactBones();
         cj.boneWeights = part.compactWeights();
@@ -145,7 +147,7 @@ TEST(InfluencePartition, CompactSpaceSortsLooseVerticesByInfluenceSet) {
         // Loose vertices of a group never share every slot with kMinRun - 1
         // others (those are runs).
         std::vector<int> covered(order.size(), 0);
-        std::size_t inRuns = 0;
+        std::size_t inRuns = 0, inBoneRuns = 0;
         for (int c = 1; c <= part.maxInfluences(); ++c) {
             std::uint32_t start = 0;
             for (const InfluenceRun& r : part.compactRuns(c)) {
@@ -160,10 +162,33 @@ TEST(InfluencePartition, CompactSpaceSortsLooseVerticesByInfluenceSet) {
                                              &part.compactWeights()[r.firstVertex * 4], 16));
                 }
             }
-            for (std::uint32_t v : part.compactLoose(c)) ++covered[v];
+            // Bone runs: consecutive, every vertex with the first one's bones
+            // (its own weights); sets of fewer than kMinRun such vertices
+            // stay loose, so no loose vertex shares its bones with
+            // kMinRun - 1 other loose ones of its group.
+            std::uint32_t boneStart = 0;
+            for (const InfluenceRun& r : part.compactBoneRuns(c)) {
+                ASSERT_EQ(r.start, boneStart);
+                ASSERT_GE(r.vertexCount, InfluencePartition::kMinRun);
+                boneStart += r.vertexCount;
+                inBoneRuns += r.vertexCount;
+                for (std::uint32_t v = r.firstVertex; v < r.firstVertex + r.vertexCount; ++v) {
+                    ++covered[v];
+                    ASSERT_EQ(0, std::memcmp(&part.compactBones()[v * 4], &part.compactBones()[r.firstVertex * 4],
+                                             4 * static_cast<std::size_t>(c)));
+                }
+            }
+            std::map<std::vector<std::int32_t>, int> looseSets;
+            for (std::uint32_t v : part.compactLoose(c)) {
+                ++covered[v];
+                const std::int32_t* b = &part.compactBones()[v * 4];
+                ASSERT_LT(++looseSets[std::vector<std::int32_t>(b, b + c)], static_cast<int>(InfluencePartition::kMinRun))
+                    << "compact " << v;
+            }
         }
         for (std::size_t i = 0; i < covered.size(); ++i) ASSERT_EQ(1, covered[i]) << "compact " << i;
         EXPECT_GT(inRuns, 0u) << "seed " << seed;
+        EXPECT_GT(inBoneRuns, 0u) << "seed " << seed;
     }
     // Without weights there is no compact space.
     ShuffledMesh m(9, 100, 5, false);
@@ -172,6 +197,7 @@ TEST(InfluencePartition, CompactSpaceSortsLooseVerticesByInfluenceSet) {
     EXPECT_TRUE(part.compactOrder().empty());
     EXPECT_TRUE(part.compactRuns(1).empty());
     EXPECT_TRUE(part.compactLoose(1).empty());
+    EXPECT_TRUE(part.compactBoneRuns(1).empty());
 }
 
 // Random meshes with 1-4 influences whose vertices share bones and weights
@@ -281,6 +307,7 @@ TEST(SkinningJob, CompactSpaceAgreesWithTheScalarListPathIncludingZeroWeights) {
                 // arraysJob keeps spans of its arguments: point at the partition's own arrays.
                 cj.boneIndices = part.compactBones();
                 cj.boneWeights = part.compactWeights();
+                cj.boneRuns = part.compactBoneRuns(c);
                 ASSERT_TRUE(cj.run()) << what;
             }
             scatterXyz(order, cop.data(), pos.data());

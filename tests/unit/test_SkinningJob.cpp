@@ -36,7 +36,7 @@ const Mat kRz90{0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};  // x -> y, y 
 
 std::vector<PaletteEntry> palette(const std::vector<Mat>& boneToMesh) { return m3gtest::paletteAtRestIdentity(boneToMesh); }
 
-const std::vector<Isa> kPaths{Isa::Scalar, Isa::Sse2, Isa::Avx2};
+const std::vector<Isa> kPaths{Isa::Scalar, Isa::Sse2, Isa::Avx2, Isa::Avx512};
 
 /// A one-vertex job: influences (bone, weight) on vertex 0, stride `stride`.
 struct OneVertex {
@@ -163,6 +163,7 @@ TEST(SkinningJob, ValidateRejectsShortArraysAndBadStrides) {
     EXPECT_FALSE(check([](OneVertex& f) { f.job.vertexCount = 2; }));
     // An ISA the CPU lacks is rejected, a supported one accepted.
     EXPECT_EQ(check([](OneVertex& f) { f.job.isa = Isa::Avx2; }), isaSupported(Isa::Avx2));
+    EXPECT_EQ(check([](OneVertex& f) { f.job.isa = Isa::Avx512; }), isaSupported(Isa::Avx512));
 }
 
 TEST(SkinningJob, IsaHelpers) {
@@ -172,6 +173,11 @@ TEST(SkinningJob, IsaHelpers) {
     EXPECT_TRUE(isaSupported(resolveIsa(Isa::Auto)));
     EXPECT_EQ(resolveIsa(Isa::Sse2), Isa::Sse2);
     EXPECT_STREQ(isaName(Isa::Avx2), "avx2");
+    EXPECT_STREQ(isaName(Isa::Avx512), "avx512");
+    // AVX-512 kernels need AVX2 and FMA beside them (the list path).
+    if (isaSupported(Isa::Avx512)) {
+        EXPECT_TRUE(isaSupported(Isa::Avx2));
+    }
     EXPECT_STREQ(isaName(Isa::Sse2), "sse2");
     EXPECT_STREQ(isaName(Isa::Scalar), "scalar");
 #if defined(__x86_64__)

@@ -160,7 +160,7 @@ TEST(SkinningJob, RunOfTwoInfluencesHandComputedOnEveryPath) {
     }
     const std::vector<InfluenceRun> runs{{0, static_cast<std::uint32_t>(n), 0}};
     const float len = std::sqrt(0.25f * 0.25f + 0.75f * 0.75f);
-    for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2}) {
+    for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2, Isa::Avx512}) {
         if (!isaSupported(isa)) continue;
         std::vector<float> out(n * 3, -9.0f), nout(n * 3, -9.0f);
         SkinningJob job = m3gtest::arraysJob({}, runs, n, 2, 4, bones, weights, pal, in, nin, out, nout, isa);
@@ -197,7 +197,7 @@ TEST(SkinningJob, RunsAgreeWithReferenceAndListPathAndAreBitIdenticalAcrossChunk
             InfluencePartition part;
             part.build(m.table.bones(), m.table.weights(), m.n, m.vertices);
             ASSERT_FALSE(part.runs(k).empty()) << k << " influences, run " << run;
-            for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2}) {
+            for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2, Isa::Avx512}) {
                 if (!isaSupported(isa)) continue;
                 const std::string what =
                     std::string(isaName(isa)) + ", " + std::to_string(k) + " influences, run " + std::to_string(run);
@@ -231,15 +231,18 @@ TEST(SkinningJob, RunsAgreeWithReferenceAndListPathAndAreBitIdenticalAcrossChunk
 // store only the run's lanes. Runs of 5 (tail at the block start), 11 (a
 // block and a 3-vertex tail) and 5 at the very end of 40 vertices, a run
 // in arrays of 6 vertices (shorter than an AVX2 block) and one of 2 at the
-// end of 3 vertices (shorter than an SSE2 block): every run vertex is
-// translated by (1, 2, 3), every other output keeps its sentinel bits.
+// end of 3 vertices (shorter than an SSE2 block); for the sixteen-lane
+// AVX-512 blocks, in 64 vertices a run of exactly 16, one of 35 (two blocks
+// and a 3-vertex tail) and 4 at the end: every run vertex is translated by
+// (1, 2, 3), every other output keeps its sentinel bits.
 TEST(SkinningJob, PartialRunBlocksWriteOnlyTheirVertices) {
     const std::vector<PaletteEntry> pal =
         m3gtest::paletteAtRestIdentity({{1, 0, 0, 1, 0, 1, 0, 2, 0, 0, 1, 3, 0, 0, 0, 1}});
-    for (std::size_t n : {40u, 6u, 3u}) {
+    for (std::size_t n : {40u, 6u, 3u, 64u}) {
         const std::vector<InfluenceRun> runs = n == 40  ? std::vector<InfluenceRun>{{3, 5, 0}, {20, 11, 5}, {35, 5, 16}}
                                                : n == 6 ? std::vector<InfluenceRun>{{1, 4, 0}}
-                                                        : std::vector<InfluenceRun>{{1, 2, 0}};
+                                               : n == 3 ? std::vector<InfluenceRun>{{1, 2, 0}}
+                                                        : std::vector<InfluenceRun>{{0, 16, 0}, {17, 35, 16}, {60, 4, 51}};
         std::vector<bool> inRun(n, false);
         for (const InfluenceRun& r : runs)
             for (std::uint32_t v = r.firstVertex; v < r.firstVertex + r.vertexCount; ++v) inRun[v] = true;
@@ -252,7 +255,7 @@ TEST(SkinningJob, PartialRunBlocksWriteOnlyTheirVertices) {
             in.insert(in.end(), {x, -x, 0.5f * x});
             nin.insert(nin.end(), {0.0f, 0.0f, 2.0f});
         }
-        for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2}) {
+        for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2, Isa::Avx512}) {
             if (!isaSupported(isa)) continue;
             const float sentinel = -7.25f;
             std::vector<float> out(n * 3, sentinel), nout(n * 3, sentinel);
@@ -294,7 +297,7 @@ TEST(SkinningJob, RunsAtOtherStridesTouchOnlyTheirVertices) {
             in[v * 4 + c] = m.raw[v * 3 + c];
             nin[v * 5 + c] = m.normals[v * 3 + c];
         }
-    for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2}) {
+    for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2, Isa::Avx512}) {
         if (!isaSupported(isa)) continue;
         std::vector<float> listPos, listNrm;
         m3gtest::skinAll(m, pal, isa, listPos, listNrm, nullptr, 4096, false);
@@ -343,7 +346,7 @@ TEST(SkinningJob, RunWithABoneOutsideThePaletteSkipsThatSlot) {
         nin.insert(nin.end(), {0.0f, 0.0f, 2.0f});
     }
     const std::vector<InfluenceRun> runs{{0, static_cast<std::uint32_t>(n), 0}};
-    for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2}) {
+    for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2, Isa::Avx512}) {
         if (!isaSupported(isa)) continue;
         std::vector<float> out(n * 3, -9.0f), nout(n * 3, -9.0f);
         SkinningJob job = m3gtest::arraysJob({}, runs, n, 2, 2, bones, weights, pal, in, nin, out, nout, isa);
@@ -378,7 +381,7 @@ TEST(SkinningJob, PaletteWithFoldedScaleAndBiasGivesTheSameVertices) {
         ASSERT_TRUE(pj.run());
         InfluencePartition part;
         part.build(m.table.bones(), m.table.weights(), m.n, m.vertices);
-        for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2}) {
+        for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2, Isa::Avx512}) {
             if (!isaSupported(isa)) continue;
             for (bool runs : {true, false}) {
                 const std::string what = std::string(isaName(isa)) + ", " + std::to_string(k) + " influences, " +
@@ -419,7 +422,7 @@ TEST(SkinningJob, OneBoneRunAppliesItsWeight) {
             nin.insert(nin.end(), {0.0f, 3.0f, 0.0f});
         }
         const std::vector<InfluenceRun> runs{{0, static_cast<std::uint32_t>(n), 0}};
-        for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2}) {
+        for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2, Isa::Avx512}) {
             if (!isaSupported(isa)) continue;
             std::vector<float> out(n * 3), nout(n * 3);
             SkinningJob job = m3gtest::arraysJob({}, runs, n, 1, 4, bones, weights, pal, in, nin, out, nout, isa);
@@ -434,4 +437,153 @@ TEST(SkinningJob, OneBoneRunAppliesItsWeight) {
             }
         }
     }
+}
+
+// Bone runs: vertices sharing their bones, each with its own weights. Two
+// bones translate by (10, 0, 0) and (0, 20, 0); vertex v of a bone run
+// weighs them w = (v + 1) / 70 and 1 - w, so it moves by (10 w, 20 (1 - w),
+// 0) and keeps its normal's direction. In 64 vertices, bone runs of exactly
+// sixteen, of 35 (two sixteen-lane blocks and a 3-vertex tail) and of 4 at
+// the very end, at influence strides 4 (the AVX-512 kernel's permuted
+// weights), 3 and 2 (its gathered weights); every other output keeps its
+// sentinel bits. A run of 5 whose second slot names a bone outside the
+// palette contributes its first slot only (w (p + (10, 0, 0))).
+TEST(SkinningJob, BoneRunsBlendEachVertexsOwnWeights) {
+    const std::vector<PaletteEntry> pal = m3gtest::paletteAtRestIdentity(
+        {{1, 0, 0, 10, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}, {1, 0, 0, 0, 0, 1, 0, 20, 0, 0, 1, 0, 0, 0, 0, 1}});
+    const std::size_t n = 64;
+    const std::vector<InfluenceRun> boneRuns{{0, 16, 0}, {17, 35, 16}, {60, 4, 51}};
+    const InfluenceRun badRun{54, 5, 0};
+    for (int stride : {4, 3, 2}) {
+        std::vector<std::int32_t> bones(n * static_cast<std::size_t>(stride), -1);
+        std::vector<float> weights(bones.size(), 0.0f), in, nin;
+        std::vector<int> kind(n, 0);  // 0: none, 1: bone run, 2: the run with a bad bone
+        for (const InfluenceRun& r : boneRuns)
+            for (std::uint32_t v = r.firstVertex; v < r.firstVertex + r.vertexCount; ++v) kind[v] = 1;
+        for (std::uint32_t v = badRun.firstVertex; v < badRun.firstVertex + badRun.vertexCount; ++v) kind[v] = 2;
+        for (std::size_t v = 0; v < n; ++v) {
+            const std::size_t s = v * static_cast<std::size_t>(stride);
+            const float w = static_cast<float>(v + 1) / 70.0f;
+            bones[s] = 0;
+            bones[s + 1] = kind[v] == 2 ? 7 : 1;
+            weights[s] = w;
+            weights[s + 1] = 1.0f - w;
+            const float x = static_cast<float>(v);
+            in.insert(in.end(), {x, -x, 0.5f * x});
+            nin.insert(nin.end(), {0.0f, 3.0f, 4.0f});
+        }
+        for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2, Isa::Avx512}) {
+            if (!isaSupported(isa)) continue;
+            for (bool bad : {false, true}) {
+                const float sentinel = -7.25f;
+                std::vector<float> out(n * 3, sentinel), nout(n * 3, sentinel);
+                SkinningJob job = m3gtest::arraysJob({}, {}, n, 2, stride, bones, weights, pal, in, nin, out, nout, isa);
+                job.boneRuns = bad ? std::span<const InfluenceRun>(&badRun, 1) : std::span<const InfluenceRun>(boneRuns);
+                ASSERT_TRUE(job.run()) << isaName(isa);
+                for (std::size_t v = 0; v < n; ++v) {
+                    const std::string what = std::string(isaName(isa)) + ", stride " + std::to_string(stride) +
+                                             ", vertex " + std::to_string(v);
+                    const float x = static_cast<float>(v), w = static_cast<float>(v + 1) / 70.0f;
+                    if (kind[v] == (bad ? 2 : 1)) {
+                        const float keep = bad ? w : 1.0f;  // the bad slot adds nothing
+                        EXPECT_NEAR(out[v * 3], keep * x + 10 * w, 1e-4f) << what;
+                        EXPECT_NEAR(out[v * 3 + 1], -keep * x + (bad ? 0.0f : 20 * (1 - w)), 1e-4f) << what;
+                        EXPECT_NEAR(out[v * 3 + 2], keep * 0.5f * x, 1e-4f) << what;
+                        EXPECT_NEAR(nout[v * 3], 0.0f, 1e-6f) << what;
+                        EXPECT_NEAR(nout[v * 3 + 1], 0.6f, 1e-6f) << what;
+                        EXPECT_NEAR(nout[v * 3 + 2], 0.8f, 1e-6f) << what;
+                    } else {
+                        for (int c = 0; c < 3; ++c) {
+                            EXPECT_EQ(out[v * 3 + c], sentinel) << what << " written";
+                            EXPECT_EQ(nout[v * 3 + c], sentinel) << what << " normal written";
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+// Bone runs through runParallel: each vertex is computed alike in any chunk
+// (the sixteen lanes are independent), so any grain and thread count gives
+// run()'s bits; validate() checks bone runs as it checks runs.
+TEST(SkinningJob, BoneRunsAreBitIdenticalAcrossChunksAndValidated) {
+    // Three of four bones per vertex, random weights: bone sets repeat, weights mostly differ.
+    m3gtest::RandomMesh m(77, 901, 4, 3, 1);
+    const auto pal = m3gtest::paletteOf(m);
+    InfluencePartition part;
+    part.build(m.table.bones(), m.table.weights(), m.n, m.vertices);
+    std::size_t inBoneRuns = 0;
+    for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2, Isa::Avx512}) {
+        if (!isaSupported(isa)) continue;
+        // The compact space of the three-influence group, skinned in place.
+        const auto order = part.compactOrder();
+        std::vector<float> cp(order.size() * 3), cn(order.size() * 3);
+        for (std::size_t i = 0; i < order.size(); ++i)
+            for (std::size_t e = 0; e < 3; ++e) {
+                cp[i * 3 + e] = m.raw[order[i] * 3 + e];
+                cn[i * 3 + e] = m.normals[order[i] * 3 + e];
+            }
+        std::vector<float> out(cp.size(), -1.0f), nout(cp.size(), -1.0f);
+        SkinningJob job;
+        job.vertexCount = order.size();
+        job.influenceCount = 3;
+        job.influenceStride = m.n;
+        job.boneIndices = part.compactBones();
+        job.boneWeights = part.compactWeights();
+        job.palette = pal;
+        job.inPositions = cp;
+        job.inNormals = cn;
+        job.outPositions = out;
+        job.outNormals = nout;
+        job.boneRuns = part.compactBoneRuns(3);
+        job.positionScale = m.scale;  // applied to the inputs, not folded into rows
+        job.positionBias = m.bias;
+        job.isa = isa;
+        inBoneRuns = 0;
+        for (const InfluenceRun& r : job.boneRuns) inBoneRuns += r.vertexCount;
+        ASSERT_TRUE(job.run()) << isaName(isa);
+        // The same vertices as a scalar vertex list (each with its own slots).
+        {
+            std::vector<std::uint32_t> list;
+            for (const InfluenceRun& r : job.boneRuns)
+                for (std::uint32_t v = r.firstVertex; v < r.firstVertex + r.vertexCount; ++v) list.push_back(v);
+            std::vector<float> lp(cp.size(), -1.0f), ln(cp.size(), -1.0f);
+            SkinningJob lj = job;
+            lj.boneRuns = {};
+            lj.vertices = list;
+            lj.outPositions = lp;
+            lj.outNormals = ln;
+            lj.isa = Isa::Scalar;
+            ASSERT_TRUE(lj.run());
+            for (std::size_t i = 0; i < lp.size(); ++i) {
+                ASSERT_NEAR(out[i], lp[i], 2e-5f * std::max(1.0f, std::abs(lp[i]))) << isaName(isa) << " " << i;
+                ASSERT_NEAR(nout[i], ln[i], 2e-6f) << isaName(isa) << " normal " << i;
+            }
+        }
+        for (int threads : {1, 3}) {
+            ThreadPool pool(threads);
+            for (std::size_t grain : {1u, 7u, 16u, 100u}) {
+                std::vector<float> p2(cp.size(), -1.0f), n2(cp.size(), -1.0f);
+                SkinningJob j2 = job;
+                j2.outPositions = p2;
+                j2.outNormals = n2;
+                ASSERT_TRUE(j2.runParallel(pool, grain));
+                EXPECT_EQ(0, std::memcmp(out.data(), p2.data(), out.size() * sizeof(float)))
+                    << isaName(isa) << ", " << threads << " threads, grain " << grain;
+                EXPECT_EQ(0, std::memcmp(nout.data(), n2.data(), nout.size() * sizeof(float)))
+                    << isaName(isa) << ", " << threads << " threads, grain " << grain;
+            }
+        }
+        // A bone run reaching past the arrays, or with a wrong start, is refused.
+        std::vector<InfluenceRun> bad(job.boneRuns.begin(), job.boneRuns.end());
+        ASSERT_FALSE(bad.empty());
+        bad.back().vertexCount += static_cast<std::uint32_t>(order.size());
+        job.boneRuns = bad;
+        EXPECT_FALSE(job.validate());
+        bad = {{0, 4, 1}};
+        job.boneRuns = bad;
+        EXPECT_FALSE(job.validate());
+    }
+    EXPECT_GT(inBoneRuns, 0u);
 }

@@ -317,7 +317,7 @@ struct Dumper {
         partition.build(table.bones(), table.weights(), table.maxInfluences(), vertices);
         std::vector<int> byCount;
         int runs = 0, runVertices = 0, loose = 0, longest = 0;
-        int compactRuns = 0, compactRunVertices = 0, compactLoose = 0;
+        int compactRuns = 0, compactRunVertices = 0, compactLoose = 0, boneRuns = 0, boneRunVertices = 0;
         for (int c = 0; c <= partition.maxInfluences(); ++c) {
             byCount.push_back(static_cast<int>(partition.group(c).size()));
             if (c == 0) continue;
@@ -331,6 +331,10 @@ struct Dumper {
                 ++compactRuns;
                 compactRunVertices += static_cast<int>(r.vertexCount);
             }
+            for (const skin::InfluenceRun& r : partition.compactBoneRuns(c)) {
+                ++boneRuns;
+                boneRunVertices += static_cast<int>(r.vertexCount);
+            }
             compactLoose += static_cast<int>(partition.compactLoose(c).size());
         }
         Json j = Json::object();
@@ -340,10 +344,13 @@ struct Dumper {
         j["longestRun"] = longest;
         // Vertices in no run of the mesh's order; the kernels take them in
         // the compact space (sorted by influence set): as runs sharing
-        // every slot, or one by one (compactLooseVertices).
+        // every slot, as bone runs sharing their bones (each vertex with
+        // its own weights), or one by one (compactLooseVertices).
         j["looseVertices"] = loose;
         j["compactRuns"] = compactRuns;
         j["compactRunVertices"] = compactRunVertices;
+        j["compactBoneRuns"] = boneRuns;
+        j["compactBoneRunVertices"] = boneRunVertices;
         j["compactLooseVertices"] = compactLoose;
         return j;
     }

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <iterator>
 #include <ctime>
 #include <cstdio>
 #include <cstdlib>
@@ -70,11 +71,14 @@ double secondsPerFrame(F&& frame, double seconds) {
     return samples[samples.size() / 2];
 }
 
-const Variant kVariants[] = {Variant::Baseline, Variant::Scalar, Variant::Sse2, Variant::Avx2, Variant::Parallel};
-/// Columns: the variants, then the compute path.
-constexpr int kColumns = 6;
+const Variant kVariants[] = {Variant::Baseline, Variant::Scalar, Variant::Sse2, Variant::Avx2, Variant::Avx512,
+                             Variant::Parallel};
+/// Columns: the variants, then the compute path (column kCompute).
+constexpr int kCompute = static_cast<int>(std::size(kVariants));
+constexpr int kColumns = kCompute + 1;
+constexpr int kAvx2Column = 3, kParallelColumn = 5;  // kVariants' Avx2 and Parallel
 
-const char* columnName(int i) { return i < 5 ? m3gbench::variantName(kVariants[i]) : "compute"; }
+const char* columnName(int i) { return i < kCompute ? m3gbench::variantName(kVariants[i]) : "compute"; }
 
 void printHeader(const char* first, const char* second, const char* third) {
     std::printf("%9s %6s %6s", first, second, third);
@@ -160,9 +164,13 @@ void printRow(std::size_t vertices, int a, int b, const double (&ns)[kColumns]) 
 }
 
 void printIsa(m3g::skin::ThreadPool& pool) {
-    std::printf("code paths on this CPU: scalar, sse2 %s, avx2+fma %s; avx2+mt uses %d threads\n",
-                m3g::skin::isaSupported(m3g::skin::Isa::Sse2) ? "yes" : "no",
-                m3g::skin::isaSupported(m3g::skin::Isa::Avx2) ? "yes" : "no", pool.threadCount());
+    std::printf(
+        "code paths on this CPU: scalar, sse2 %s, avx2+fma %s, avx512 %s (runs; default %s); avx2+mt uses %d "
+        "threads\n",
+        m3g::skin::isaSupported(m3g::skin::Isa::Sse2) ? "yes" : "no",
+        m3g::skin::isaSupported(m3g::skin::Isa::Avx2) ? "yes" : "no",
+        m3g::skin::isaSupported(m3g::skin::Isa::Avx512) ? "yes" : "no",
+        m3g::skin::isaName(m3g::skin::resolveIsa(m3g::skin::Isa::Auto)), pool.threadCount());
 }
 
 int benchSkin(const BenchOptions& o) {
@@ -198,7 +206,7 @@ int benchSkin(const BenchOptions& o) {
         for (int k : influences) {
             m3gbench::SkinWorkload w(v, k, bones, o.runLength);
             double ns[kColumns];
-            for (int i = 0; i < 5; ++i) {
+            for (int i = 0; i < kCompute; ++i) {
                 const Variant var = kVariants[i];
                 if ((var == Variant::Baseline && v > o.baselineMax) || !w.frame(var, &pool)) {
                     ns[i] = -1;
@@ -206,23 +214,23 @@ int benchSkin(const BenchOptions& o) {
                 }
                 ns[i] = secondsPerFrame([&] { w.frame(var, &pool); }, o.seconds) * 1e9 / static_cast<double>(v);
             }
-            ns[5] = -1;
+            ns[kCompute] = -1;
             if (compute) {
                 compute->reset();
                 compute->skinFrame(w);  // uploads the static inputs: once per mesh, not per frame
-                ns[5] = secondsPerFrame([&] { compute->skinFrame(w); }, o.seconds) * 1e9 / static_cast<double>(v);
+                ns[kCompute] = secondsPerFrame([&] { compute->skinFrame(w); }, o.seconds) * 1e9 / static_cast<double>(v);
                 const double dispatch = medianDispatchSeconds(*compute, [&] { compute->skinFrame(w); });
                 const double cpu = cpuSecondsPerFrame([&] { compute->skinFrame(w); }, o.seconds);
                 w.frame(Variant::Scalar);  // the CPU result to check the device's against
                 const double diff = compute->skinDifference(w);
                 if (diff > 1e-4) std::printf("warning: compute skinning differs from the CPU by %.3g\n", diff);
                 if (k == 4 && v >= 10000)
-                    computeRows.push_back({v, ns[5], dispatch * 1e9 / static_cast<double>(v),
+                    computeRows.push_back({v, ns[kCompute], dispatch * 1e9 / static_cast<double>(v),
                                            cpu * 1e9 / static_cast<double>(v), diff});
             }
             printRow(v, k, bones, ns);
-            if (k == m3gbench::SkinWorkload::kMaxInfluences && ns[3] > 0) {
-                RoofRow row{v, ns[3], ns[4], {}, {}};
+            if (k == m3gbench::SkinWorkload::kMaxInfluences && ns[kAvx2Column] > 0) {
+                RoofRow row{v, ns[kAvx2Column], ns[kParallelColumn], {}, {}};
                 for (int t = 0; t < 2; ++t) {
                     const m3gbench::SkinStreamRoof roof = w.streamRoof(t == 1);
                     const double perV = 1e9 / static_cast<double>(v);
@@ -306,7 +314,7 @@ int benchMorph(const BenchOptions& o) {
         for (int t : {1, 4}) {
             m3gbench::MorphWorkload w(v, t);
             double ns[kColumns];
-            for (int i = 0; i < 5; ++i) {
+            for (int i = 0; i < kCompute; ++i) {
                 const Variant var = kVariants[i];
                 if (!w.frame(var, &pool)) {
                     ns[i] = -1;
@@ -314,11 +322,11 @@ int benchMorph(const BenchOptions& o) {
                 }
                 ns[i] = secondsPerFrame([&] { w.frame(var, &pool); }, o.seconds) * 1e9 / static_cast<double>(v);
             }
-            ns[5] = -1;
+            ns[kCompute] = -1;
             if (compute) {
                 compute->reset();
                 compute->morphFrame(w);  // uploads the static inputs
-                ns[5] = secondsPerFrame([&] { compute->morphFrame(w); }, o.seconds) * 1e9 / static_cast<double>(v);
+                ns[kCompute] = secondsPerFrame([&] { compute->morphFrame(w); }, o.seconds) * 1e9 / static_cast<double>(v);
                 w.frame(Variant::Scalar);
                 const double diff = compute->morphDifference(w);
                 if (diff > 1e-4) std::printf("warning: compute morph differs from the CPU by %.3g\n", diff);

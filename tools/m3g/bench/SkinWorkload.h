@@ -29,7 +29,7 @@ namespace m3gbench {
 
 /// Kernel variants measured. Baseline = the paper's description of Nokia's
 /// engine (SkinBaseline); the others are this library's palette + kernel.
-enum class Variant { Baseline, Scalar, Sse2, Avx2, Parallel };
+enum class Variant { Baseline, Scalar, Sse2, Avx2, Parallel, Avx512 };
 
 inline const char* variantName(Variant v) {
     switch (v) {
@@ -38,8 +38,19 @@ inline const char* variantName(Variant v) {
         case Variant::Sse2: return "sse2";
         case Variant::Avx2: return "avx2";
         case Variant::Parallel: return "avx2+mt";
+        case Variant::Avx512: return "avx512";
     }
     return "?";
+}
+
+/// The kernels a variant runs (Parallel: the AVX2 ones on the pool).
+inline m3g::skin::Isa isaOf(Variant v) {
+    switch (v) {
+        case Variant::Scalar: return m3g::skin::Isa::Scalar;
+        case Variant::Sse2: return m3g::skin::Isa::Sse2;
+        case Variant::Avx512: return m3g::skin::Isa::Avx512;
+        default: return m3g::skin::Isa::Avx2;
+    }
 }
 
 inline std::array<float, 16> benchAffine(std::mt19937& rng) {
@@ -169,9 +180,7 @@ struct SkinWorkload {
         job.inNormals = normals;
         job.outPositions = outPositions;
         job.outNormals = outNormals;
-        job.isa = variant == Variant::Scalar ? m3g::skin::Isa::Scalar
-                  : variant == Variant::Sse2 ? m3g::skin::Isa::Sse2
-                                             : m3g::skin::Isa::Avx2;
+        job.isa = isaOf(variant);
         if (!m3g::skin::isaSupported(job.isa)) return false;
         if (variant == Variant::Parallel) return job.runParallel(pool ? *pool : m3g::skin::ThreadPool::shared());
         return job.run();
@@ -233,9 +242,7 @@ struct MorphWorkload {
             naive();
             return true;
         }
-        const m3g::skin::Isa isa = variant == Variant::Scalar ? m3g::skin::Isa::Scalar
-                                   : variant == Variant::Sse2 ? m3g::skin::Isa::Sse2
-                                                              : m3g::skin::Isa::Avx2;
+        const m3g::skin::Isa isa = isaOf(variant);
         if (!m3g::skin::isaSupported(isa)) return false;
         m3g::skin::MorphJob p;
         p.base = basePositions;

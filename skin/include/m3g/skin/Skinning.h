@@ -46,6 +46,13 @@ struct SkinningJob {
     /// run's first vertex: a run whose vertices differ is computed with the
     /// first one's slots for all (still never read or written out of bounds).
     std::span<const InfluenceRun> runs;
+    /// More vertices, as runs sharing their bones but each with its own
+    /// weights (InfluencePartition::compactBoneRuns): a vertex of a bone run
+    /// is skinned with the bones of the run's first vertex and its own
+    /// weights. The AVX-512 kernel blends sixteen such vertices' matrices at
+    /// once from the run's palette entries; the other paths take them as a
+    /// vertex list (each with its own slots, the same bones in a valid run).
+    std::span<const InfluenceRun> boneRuns;
     /// Influences used per listed vertex: slots 0 .. influenceCount-1.
     /// 0 means "no bone": the vertex stays in mesh space (s * p + bias, the
     /// normal renormalised), as Nokia's M3G implementation (reference)
@@ -89,13 +96,14 @@ struct SkinningJob {
     /// both absent, influenceCount <= influenceStride, the influence arrays
     /// reach the listed vertices, every listed vertex is < vertexCount (one
     /// max reduction over the list), every run lies inside the arrays with
-    /// consistent `start` values, and the ISA is supported. The bone
+    /// consistent `start` values (runs and boneRuns each counted from 0),
+    /// and the ISA is supported. The bone
     /// indices are not scanned (see boneIndices). Like ozz-animation, cheap
     /// enough to run on every call.
     bool validate() const noexcept;
     /// validate(), then skins every listed vertex. Returns validate().
     bool run() const noexcept;
-    /// validate() once, then runs the list, and the runs, in chunks of
+    /// validate() once, then runs the list, the runs and the bone runs, in chunks of
     /// `grain` vertices on `pool`. The chunks do not depend on the pool's
     /// size and each vertex is computed the same way in any chunk, so the
     /// output is bit-identical to run() for any thread count.
@@ -155,9 +163,15 @@ public:
     /// compactOrder().size() * stride slots.
     std::span<const std::int32_t> compactBones() const noexcept { return compactBones_; }
     std::span<const float> compactWeights() const noexcept { return compactWeights_; }
-    /// Runs and loose positions (compact indices) of the compact vertices
-    /// with `count` influences; runs ascending, `start` counted from 0.
+    /// Runs, bone runs and loose positions (compact indices) of the compact
+    /// vertices with `count` influences, which they cover once: runs share
+    /// every slot; bone runs (kMinRun vertices or more) share their bones,
+    /// each vertex with its own weights (SkinningJob::boneRuns); the rest
+    /// are loose. Within one set of bones the runs come first, then the
+    /// bone run, so that the vertices of a bone run are consecutive. Runs
+    /// and bone runs ascending, `start` counted from 0 in each.
     std::span<const InfluenceRun> compactRuns(int count) const noexcept;
+    std::span<const InfluenceRun> compactBoneRuns(int count) const noexcept;
     std::span<const std::uint32_t> compactLoose(int count) const noexcept;
 
 private:
@@ -175,8 +189,9 @@ private:
     std::vector<float> compactWeights_;
     std::vector<InfluenceRun> compactRuns_;
     std::vector<std::uint32_t> compactLoose_;
-    std::vector<std::size_t> compactRunOffsets_, compactLooseOffsets_;
-    std::vector<std::uint32_t> cursorScratch_;
+    std::vector<InfluenceRun> compactBoneRuns_;
+    std::vector<std::size_t> compactRunOffsets_, compactLooseOffsets_, compactBoneRunOffsets_;
+    std::vector<std::uint32_t> cursorScratch_, looseScratch_;
 };
 
 /// out[order[i]] = in[i] for xyz triples (packed, 3 floats a vertex):
