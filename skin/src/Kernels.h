@@ -40,6 +40,9 @@ bool skinRunsAvx512(const SkinningJob& job, std::size_t begin, std::size_t end) 
 /// (nothing done) for what it does not cover: no normals, no influence,
 /// other strides than 3.
 bool skinBoneRunsAvx512(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept;
+/// The same eight lanes at a time for a run's whole eights, its last
+/// vertices through the list kernel (false, as skinBoneRunsAvx512).
+bool skinBoneRunsAvx2(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept;
 /// Elements [begin, end) of a validated MorphJob; with job.normalize, each
 /// xyz triple renormalised before it is stored (four or eight lanes at a
 /// time; the last triples in a padded block, through the same lane
@@ -96,16 +99,20 @@ public:
             position_ += n;
             if (n == 0) continue;  // an empty run
             runFirst = r.firstVertex;
+            runLength_ = r.vertexCount;
             first = r.firstVertex + offset;
             count = n;
             return true;
         }
         return false;
     }
+    /// The vertex count of the last piece's run (all of it, not the piece).
+    std::size_t runLength() const noexcept { return runLength_; }
 
 private:
     const InfluenceRun* run_;
     std::size_t position_, end_;
+    std::size_t runLength_ = 0;
 };
 
 /// x / |x| for an xyz triple in place (each component divided by the

@@ -92,27 +92,34 @@ bool check(const SkinningJob& j, std::size_t* runVertices, std::size_t* boneRunV
     return !(bad0 | bad1 | bad2 | bad3);
 }
 
-/// Positions [begin, end) of `runs` (the job's runs or bone runs) as vertex
-/// lists, a stack buffer at a time, on the list kernels: the scalar path,
-/// and what the SIMD run kernels do not cover (each vertex of a valid run
-/// has the run's slots, or for a bone run its bones, which these paths read).
+/// Positions [begin, end) of `runs` (the job's runs or bone runs) as one
+/// vertex list, a 256-index stack buffer at a time, on the list kernels: the
+/// scalar path, and what the SIMD run kernels do not cover (each vertex of
+/// a valid run has the run's slots, or for a bone run its bones, which these
+/// paths read). The pieces are concatenated so that short runs fill whole
+/// blocks of the list kernel; a vertex's result does not depend on its
+/// place in the list (SkinningAvx2.cpp's blocks decide per lane).
 void runsAsLists(const SkinningJob& job, std::span<const InfluenceRun> runs, Isa isa, std::size_t begin,
                  std::size_t end) noexcept {
     std::uint32_t list[256];
+    std::size_t listed = 0;
     SkinningJob sub = job;
     sub.runs = {};
     sub.boneRuns = {};
+    auto flush = [&] {
+        sub.vertices = std::span<const std::uint32_t>(list, listed);
+        runRange(sub, isa, 0, listed);
+        listed = 0;
+    };
     detail::RunPieces pieces(runs, begin, end);
     std::size_t runFirst, first, count;
     while (pieces.next(runFirst, first, count)) {
-        for (std::size_t done = 0; done < count;) {
-            const std::size_t n = std::min(count - done, std::size(list));
-            for (std::size_t i = 0; i < n; ++i) list[i] = static_cast<std::uint32_t>(first + done + i);
-            sub.vertices = std::span<const std::uint32_t>(list, n);
-            runRange(sub, isa, 0, n);
-            done += n;
+        for (std::size_t i = 0; i < count; ++i) {
+            list[listed++] = static_cast<std::uint32_t>(first + i);
+            if (listed == std::size(list)) flush();
         }
     }
+    if (listed > 0) flush();
 }
 
 /// Positions [begin, end) of the job's run sequence.
@@ -129,6 +136,7 @@ void runRuns(const SkinningJob& job, Isa isa, std::size_t begin, std::size_t end
 void runBoneRuns(const SkinningJob& job, Isa isa, std::size_t begin, std::size_t end) noexcept {
 #ifdef M3G_SKIN_X86
     if (isa == Isa::Avx512 && detail::skinBoneRunsAvx512(job, begin, end)) return;
+    if ((isa == Isa::Avx2 || isa == Isa::Avx512) && detail::skinBoneRunsAvx2(job, begin, end)) return;
 #endif
     runsAsLists(job, job.boneRuns, isa, begin, end);
 }
@@ -258,7 +266,6 @@ void InfluencePartition::buildCompact(std::span<const std::int32_t> boneIndices,
     compactBoneRunOffsets_.assign(offsets_.size(), 0);
     compactLooseOffsets_.assign(offsets_.size(), 0);
     std::vector<std::uint32_t>& sorted = cursorScratch_;
-    std::vector<std::uint32_t>& setLoose = looseScratch_;
     for (std::size_t c = 1; c + 1 < offsets_.size(); ++c) {
         compactRunOffsets_[c] = compactRuns_.size();
         compactBoneRunOffsets_[c] = compactBoneRuns_.size();
@@ -298,40 +305,64 @@ void InfluencePartition::buildCompact(std::span<const std::int32_t> boneIndices,
                                    boneWeights.begin() + static_cast<std::ptrdiff_t>(v * ns + ns));
             return static_cast<std::uint32_t>(compactOrder_.size() - 1);
         };
-        // One set of bones at a time: equal slots are neighbours, runs of
-        // kMinRun or more go first; the other vertices of the set follow,
-        // consecutive, as one bone run when there are kMinRun or more,
-        // else loose.
-        std::uint32_t runStart = 0, boneRunStart = 0;
+        // One set of bones at a time: equal slots are neighbours; runs of
+        // kMinRun or more are runs; the set's other vertices form a bone run
+        // when there are kMinRun or more, else they are loose. The group's
+        // runs are laid out first, then its bone runs, then its loose
+        // vertices, so that each kind is consecutive in the compact arrays
+        // (the list kernel, which takes bone runs on CPUs without a bone-run
+        // kernel, stores whole blocks of consecutive vertices at once).
+        std::vector<std::uint32_t>& runVertices = runScratch_;
+        std::vector<std::uint32_t>& boneRunVertices = boneRunScratch_;
+        std::vector<std::uint32_t>& looseVertices = looseScratch_;
+        std::vector<std::uint32_t>& runLengths = runLengthScratch_;
+        std::vector<std::uint32_t>& boneRunLengths = boneRunLengthScratch_;
+        runVertices.clear();
+        boneRunVertices.clear();
+        looseVertices.clear();
+        runLengths.clear();
+        boneRunLengths.clear();
         for (std::size_t i = 0; i < sorted.size();) {
             std::size_t setEnd = i + 1;
             while (setEnd < sorted.size() && sameBones(sorted[i], sorted[setEnd])) ++setEnd;
-            setLoose.clear();
+            const std::size_t setLooseFrom = looseVertices.size();
             for (std::size_t q = i; q < setEnd;) {
                 std::size_t e = q + 1;
                 while (e < setEnd && same(sorted[q], sorted[e])) ++e;
+                auto from = sorted.begin() + static_cast<std::ptrdiff_t>(q);
+                auto to = sorted.begin() + static_cast<std::ptrdiff_t>(e);
                 if (e - q >= kMinRun) {
-                    const std::uint32_t first = append(sorted[q]);
-                    for (std::size_t r = q + 1; r < e; ++r) append(sorted[r]);
-                    compactRuns_.push_back({first, static_cast<std::uint32_t>(e - q), runStart});
-                    runStart += static_cast<std::uint32_t>(e - q);
+                    runVertices.insert(runVertices.end(), from, to);
+                    runLengths.push_back(static_cast<std::uint32_t>(e - q));
                 } else {
-                    setLoose.insert(setLoose.end(), sorted.begin() + static_cast<std::ptrdiff_t>(q),
-                                    sorted.begin() + static_cast<std::ptrdiff_t>(e));
+                    looseVertices.insert(looseVertices.end(), from, to);
                 }
                 q = e;
             }
-            if (setLoose.size() >= kMinRun) {
-                const std::uint32_t first = append(setLoose[0]);
-                for (std::size_t r = 1; r < setLoose.size(); ++r) append(setLoose[r]);
-                const auto count = static_cast<std::uint32_t>(setLoose.size());
-                compactBoneRuns_.push_back({first, count, boneRunStart});
-                boneRunStart += count;
-            } else {
-                for (std::uint32_t v : setLoose) compactLoose_.push_back(append(v));
+            const std::size_t setLoose = looseVertices.size() - setLooseFrom;
+            if (setLoose >= kMinRun) {
+                auto from = looseVertices.begin() + static_cast<std::ptrdiff_t>(setLooseFrom);
+                boneRunVertices.insert(boneRunVertices.end(), from, looseVertices.end());
+                boneRunLengths.push_back(static_cast<std::uint32_t>(setLoose));
+                looseVertices.erase(from, looseVertices.end());
             }
             i = setEnd;
         }
+        auto appendRuns = [&](const std::vector<std::uint32_t>& vertices, const std::vector<std::uint32_t>& lengths,
+                              std::vector<InfluenceRun>& out) {
+            std::size_t at = 0;
+            std::uint32_t start = 0;
+            for (std::uint32_t length : lengths) {
+                const std::uint32_t first = append(vertices[at]);
+                for (std::size_t r = 1; r < length; ++r) append(vertices[at + r]);
+                out.push_back({first, length, start});
+                start += length;
+                at += length;
+            }
+        };
+        appendRuns(runVertices, runLengths, compactRuns_);
+        appendRuns(boneRunVertices, boneRunLengths, compactBoneRuns_);
+        for (std::uint32_t v : looseVertices) compactLoose_.push_back(append(v));
     }
     compactRunOffsets_.back() = compactRuns_.size();
     compactBoneRunOffsets_.back() = compactBoneRuns_.size();

@@ -182,8 +182,11 @@ M3G_AVX2 void skinT(const SkinningJob& j, std::size_t begin, std::size_t end) no
 // its vertices are consecutive and the strides are 3, else lane by lane. A
 // block that runs past the list repeats its last vertex; a block cut by a
 // chunk boundary is computed whole and stores only its lanes in the chunk.
-// Which path a vertex takes depends only on its block, so runParallel() is
-// bit-identical to run() for any grain and thread count.
+// A listed vertex's result depends only on the vertex (the same arithmetic
+// in every lane of either path; a vertex with a slot outside the palette is
+// redone by the checked formula), so runParallel() is bit-identical to
+// run() for any grain and thread count, and a vertex list may be cut
+// anywhere (bone runs taken as one list, Skinning.cpp).
 
 /// The zero entry slots outside the palette read instead (their vertices
 /// are then redone by skinVertexChecked, which skips such slots).
@@ -199,6 +202,7 @@ struct BlockContext {
     std::size_t safeN;
     const std::int32_t* boneIndices;
     const float* boneWeights;
+    std::size_t weightCount;  // floats in boneWeights
     std::size_t stride;
     int count;
     const PaletteEntry* palette;
@@ -304,7 +308,8 @@ struct Block {
     __m256 x, y, z, nx, ny, nz;
 };
 
-/// x|y, z|nx, ny|nz of lanes l0 .. l0+3 (the four vertices per half).
+/// x|y, z|nx, ny|nz of lanes l0 .. l0+3 (the four vertices per half); bit
+/// l of `bad` set for a lane l with a slot outside the palette.
 template <int K, bool Wide, class Lane>
 M3G_AVX2_INLINE void skinQuad(const BlockContext& c, Lane& lane, int l0, __m256& g0, __m256& g1, __m256& g2,
                               unsigned& bad) noexcept {
@@ -317,7 +322,9 @@ M3G_AVX2_INLINE void skinQuad(const BlockContext& c, Lane& lane, int l0, __m256&
         const float* n;
         bool wide;
         lane(l0 + q, bi, bw, p, n, wide);
-        r[q] = blendLane<K>(c, bi, bw, broadcastXyz<Wide>(p, wide), broadcastXyz<Wide>(n, wide), bad);
+        unsigned laneBad = 0;
+        r[q] = blendLane<K>(c, bi, bw, broadcastXyz<Wide>(p, wide), broadcastXyz<Wide>(n, wide), laneBad);
+        bad |= laneBad << (l0 + q);
     }
     g0 = quadSum(pairSum(r[0].m0, r[1].m0), pairSum(r[2].m0, r[3].m0));
     g1 = quadSum(pairSum(r[0].m1, r[1].m1), pairSum(r[2].m1, r[3].m1));
@@ -437,9 +444,10 @@ M3G_AVX2_INLINE Block skinUniform(const Rows& m, const float* p, const float* n)
 
 /// xyz of vertices first .. first+lanes-1 (lanes 1..8; the last repeated in
 /// the lanes beyond) at `stride` floats as eight lanes of x, y, z. Vertices
-/// below `safe` are read four floats at a time.
+/// below `safe` are read four floats at a time; `w` (if given) receives the
+/// fourth floats, meaningful when every lane is below `safe`.
 M3G_AVX2_INLINE void gatherSoa3(const float* base, std::size_t stride, std::size_t safe, std::size_t first,
-                                std::size_t lanes, __m256& x, __m256& y, __m256& z) noexcept {
+                                std::size_t lanes, __m256& x, __m256& y, __m256& z, __m256* w = nullptr) noexcept {
     __m128 q[8];
 #pragma GCC unroll 8
     for (std::size_t l = 0; l < 8; ++l) {
@@ -453,6 +461,7 @@ M3G_AVX2_INLINE void gatherSoa3(const float* base, std::size_t stride, std::size
     x = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
     y = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
     z = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
+    if (w) *w = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));  // the fourth floats (lanes below `safe`)
 }
 
 /// Lanes 0 .. lanes-1 of x, y, z to the xyz triples of vertices first ..
@@ -484,6 +493,7 @@ M3G_AVX2_INLINE BlockContext blockContext(const SkinningJob& j) noexcept {
     c.safeN = j.inNormals.size() >= 4 ? (j.inNormals.size() - 4) / c.inNs + 1 : 0;
     c.boneIndices = j.boneIndices.data();
     c.boneWeights = j.boneWeights.data();
+    c.weightCount = j.boneWeights.size();
     c.stride = static_cast<std::size_t>(j.influenceStride);
     c.count = j.influenceCount;
     c.palette = j.palette.data();
@@ -578,10 +588,13 @@ M3G_AVX2 void skinBlocks(const SkinningJob& j, std::size_t begin, std::size_t en
             op[0] = t[0][l], op[1] = t[1][l], op[2] = t[2][l];
             on[0] = t[3][l], on[1] = t[4][l], on[2] = t[5][l];
         }
-        // A block with a slot outside the palette: all its vertices by the
-        // checked formula (the block decides, so chunking does not).
+        // A vertex with a slot outside the palette: by the checked formula.
+        // Each lane's result depends on its own vertex only (the arithmetic
+        // is the same in every lane and either path), so neither the block
+        // a vertex lands in nor the chunking changes its bits.
         if (bad)
-            for (std::size_t l = lo; l < hi; ++l) skinVertexChecked(j, v[l]);
+            for (std::size_t l = lo; l < hi; ++l)
+                if ((bad >> l) & 1u) skinVertexChecked(j, v[l]);
     }
 }
 
@@ -667,6 +680,138 @@ M3G_AVX2 void skinRuns(const SkinningJob& j, std::size_t begin, std::size_t end)
     while (pieces.next(runFirst, first, count)) skinRun<K>(j, c, packed, runFirst, first, count);
 }
 
+// ---------------------------------------------------------------------------
+// Bone runs (SkinningJob::boneRuns): vertices sharing their bones, each with
+// its own weights, eight lanes a step (SkinningAvx512.cpp has the sixteen-
+// lane form and why): each lane's weights times the run's palette entries,
+// broadcast, give the lanes' blended matrix a row at a time, applied at
+// once, with no horizontal reduction. Packed arrays only. The blocks are the
+// run's whole eights counted from its first vertex (a block cut by a chunk
+// is computed whole and stores only its lanes in the chunk); the run's last
+// vertices (fewer than eight) go to the list kernel, whose blocks take them
+// together with other runs' (a short block of their own, gathered lane by
+// lane, measured slower: test.m3g's bone runs average ten vertices). Which
+// kernel a vertex takes depends only on its place in its run, so chunking
+// does not change its bits.
+
+/// Row r (coefficients 4r .. 4r+3) of the lanes' blended matrices.
+template <int K>
+M3G_AVX2_INLINE void blendRow8(const float* const (&e)[4], const __m256 (&w)[4], int r, __m256& c0, __m256& c1,
+                               __m256& c2, __m256& c3) noexcept {
+    c0 = _mm256_mul_ps(w[0], _mm256_broadcast_ss(e[0] + 4 * r));
+    c1 = _mm256_mul_ps(w[0], _mm256_broadcast_ss(e[0] + 4 * r + 1));
+    c2 = _mm256_mul_ps(w[0], _mm256_broadcast_ss(e[0] + 4 * r + 2));
+    c3 = _mm256_mul_ps(w[0], _mm256_broadcast_ss(e[0] + 4 * r + 3));
+#pragma GCC unroll 4
+    for (int k = 1; k < K; ++k) {
+        c0 = _mm256_fmadd_ps(w[k], _mm256_broadcast_ss(e[k] + 4 * r), c0);
+        c1 = _mm256_fmadd_ps(w[k], _mm256_broadcast_ss(e[k] + 4 * r + 1), c1);
+        c2 = _mm256_fmadd_ps(w[k], _mm256_broadcast_ss(e[k] + 4 * r + 2), c2);
+        c3 = _mm256_fmadd_ps(w[k], _mm256_broadcast_ss(e[k] + 4 * r + 3), c3);
+    }
+}
+
+/// The eight vertices from b of a bone run whose K entries are `e`; lanes
+/// [lo, hi) stored.
+template <int K>
+M3G_AVX2_INLINE void skinBoneBlock(const SkinningJob& j, const BlockContext& c, const float* const (&e)[4],
+                                   std::size_t b, std::size_t lo, std::size_t hi) noexcept {
+    __m256 px, py, pz, nx, ny, nz;
+    loadSoa3(c.inP + 3 * b, px, py, pz);
+    loadSoa3(c.inN + 3 * b, nx, ny, nz);
+    if (!c.identity) {
+        const __m256 s = _mm256_set1_ps(j.positionScale);
+        px = _mm256_fmadd_ps(px, s, _mm256_set1_ps(j.positionBias[0]));
+        py = _mm256_fmadd_ps(py, s, _mm256_set1_ps(j.positionBias[1]));
+        pz = _mm256_fmadd_ps(pz, s, _mm256_set1_ps(j.positionBias[2]));
+    }
+    // Slot k of lane l at weights[(b + l) * stride + k]: with four slots or
+    // more (and the arrays holding four floats from every lane's first) the
+    // lanes' first four transposed as gatherSoa3 does xyz, else element by
+    // element.
+    __m256 w[4];
+    const float* weights = c.boneWeights + b * c.stride;
+    if (c.stride >= 4 && (b + 8) * c.stride <= c.weightCount) {
+        gatherSoa3(weights, c.stride, 8, 0, 8, w[0], w[1], w[2], &w[3]);
+    } else {
+#pragma GCC unroll 4
+        for (int k = 0; k < K; ++k) {
+            const float* s = weights + k;
+            const std::size_t t = c.stride;
+            w[k] = _mm256_setr_ps(s[0], s[t], s[2 * t], s[3 * t], s[4 * t], s[5 * t], s[6 * t], s[7 * t]);
+        }
+    }
+    __m256 c0, c1, c2, c3;
+    blendRow8<K>(e, w, 0, c0, c1, c2, c3);
+    const __m256 x = _mm256_fmadd_ps(c2, pz, _mm256_fmadd_ps(c1, py, _mm256_fmadd_ps(c0, px, c3)));
+    blendRow8<K>(e, w, 1, c0, c1, c2, c3);
+    const __m256 y = _mm256_fmadd_ps(c2, pz, _mm256_fmadd_ps(c1, py, _mm256_fmadd_ps(c0, px, c3)));
+    blendRow8<K>(e, w, 2, c0, c1, c2, c3);
+    const __m256 z = _mm256_fmadd_ps(c2, pz, _mm256_fmadd_ps(c1, py, _mm256_fmadd_ps(c0, px, c3)));
+    blendRow8<K>(e, w, 3, c0, c1, c2, c3);
+    const __m256 bx = _mm256_fmadd_ps(c2, nz, _mm256_fmadd_ps(c1, ny, _mm256_mul_ps(c0, nx)));
+    blendRow8<K>(e, w, 4, c0, c1, c2, c3);
+    const __m256 by = _mm256_fmadd_ps(c2, nz, _mm256_fmadd_ps(c1, ny, _mm256_mul_ps(c0, nx)));
+    blendRow8<K>(e, w, 5, c0, c1, c2, c3);
+    const __m256 bz = _mm256_fmadd_ps(c2, nz, _mm256_fmadd_ps(c1, ny, _mm256_mul_ps(c0, nx)));
+    const __m256 inv = inverseLength(bx, by, bz);
+    const __m256 ox = _mm256_mul_ps(bx, inv), oy = _mm256_mul_ps(by, inv), oz = _mm256_mul_ps(bz, inv);
+    float* outP = j.outPositions.data() + 3 * b;
+    float* outN = j.outNormals.data() + 3 * b;
+    if (lo == 0 && hi == 8) {
+        storeSoa3(outP, x, y, z);
+        storeSoa3(outN, ox, oy, oz);
+    } else {
+        storeSoa3Lanes(outP, x, y, z, lo, hi - lo);
+        storeSoa3Lanes(outN, ox, oy, oz, lo, hi - lo);
+    }
+}
+
+template <int K>
+M3G_AVX2 void skinBoneRuns(const SkinningJob& j, std::size_t begin, std::size_t end) noexcept {
+    const BlockContext c = blockContext(j);
+    std::uint32_t tail[256];
+    std::size_t tailCount = 0;
+    auto flushTail = [&] {
+        if (tailCount == 0) return;
+        SkinningJob list = j;
+        list.runs = {};
+        list.boneRuns = {};
+        list.vertices = std::span<const std::uint32_t>(tail, tailCount);
+        skinBlocks<K>(list, 0, tailCount);
+        tailCount = 0;
+    };
+    RunPieces pieces(j.boneRuns, begin, end);
+    std::size_t runFirst, first, count;
+    while (pieces.next(runFirst, first, count)) {
+        const std::size_t stop = first + count;
+        const std::size_t wholeEnd = runFirst + pieces.runLength() / 8 * 8;
+        const std::int32_t* bi = c.boneIndices + runFirst * c.stride;
+        const float* e[4] = {};
+        bool bad = false;
+        for (int k = 0; k < K; ++k) {
+            const auto bone = static_cast<std::uint32_t>(bi[k]);
+            bad |= bone >= c.bones;
+            e[k] = reinterpret_cast<const float*>(c.palette + (bone < c.bones ? bone : 0));
+        }
+        if (bad) {
+            // A slot outside the palette: the checked formula, vertex by vertex.
+            for (std::size_t v = first; v < stop; ++v) skinVertexChecked(j, v);
+            continue;
+        }
+        for (std::size_t b = runFirst + (first - runFirst) / 8 * 8; b < stop && b < wholeEnd; b += 8) {
+            const std::size_t lo = first > b ? first - b : 0;
+            const std::size_t hi = stop - b < 8 ? stop - b : 8;
+            skinBoneBlock<K>(j, c, e, b, lo, hi);
+        }
+        for (std::size_t v = first > wholeEnd ? first : wholeEnd; v < stop; ++v) {
+            tail[tailCount++] = static_cast<std::uint32_t>(v);
+            if (tailCount == std::size(tail)) flushTail();
+        }
+    }
+    flushTail();
+}
+
 template <bool Normals>
 M3G_AVX2 void skinN(const SkinningJob& j, std::size_t begin, std::size_t end) noexcept {
     if constexpr (Normals) {
@@ -715,6 +860,20 @@ M3G_AVX2 bool skinRunsAvx2(const SkinningJob& job, std::size_t begin, std::size_
         case 3: skinRuns<3>(job, begin, end); return true;
         case 4: skinRuns<4>(job, begin, end); return true;
         default: skinRuns<-1>(job, begin, end); return true;
+    }
+}
+
+M3G_AVX2 bool skinBoneRunsAvx2(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept {
+    if (job.inNormals.empty()) return false;
+    if (job.inPositionStride != 3 || job.inNormalStride != 3 || job.outPositionStride != 3 ||
+        job.outNormalStride != 3)
+        return false;
+    switch (job.influenceCount) {
+        case 1: skinBoneRuns<1>(job, begin, end); return true;
+        case 2: skinBoneRuns<2>(job, begin, end); return true;
+        case 3: skinBoneRuns<3>(job, begin, end); return true;
+        case 4: skinBoneRuns<4>(job, begin, end); return true;
+        default: return false;  // 0, or more than four slots: the list path
     }
 }
 

@@ -167,9 +167,9 @@ public:
     /// vertices with `count` influences, which they cover once: runs share
     /// every slot; bone runs (kMinRun vertices or more) share their bones,
     /// each vertex with its own weights (SkinningJob::boneRuns); the rest
-    /// are loose. Within one set of bones the runs come first, then the
-    /// bone run, so that the vertices of a bone run are consecutive. Runs
-    /// and bone runs ascending, `start` counted from 0 in each.
+    /// are loose. Per group the runs come first, then the bone runs, then
+    /// the loose vertices, each kind consecutive. Runs and bone runs
+    /// ascending, `start` counted from 0 in each.
     std::span<const InfluenceRun> compactRuns(int count) const noexcept;
     std::span<const InfluenceRun> compactBoneRuns(int count) const noexcept;
     std::span<const std::uint32_t> compactLoose(int count) const noexcept;
@@ -191,7 +191,10 @@ private:
     std::vector<std::uint32_t> compactLoose_;
     std::vector<InfluenceRun> compactBoneRuns_;
     std::vector<std::size_t> compactRunOffsets_, compactLooseOffsets_, compactBoneRunOffsets_;
-    std::vector<std::uint32_t> cursorScratch_, looseScratch_;
+    // buildCompact() scratch: a group's run, bone-run and loose vertices
+    // before they are laid out, and the lengths of its runs and bone runs.
+    std::vector<std::uint32_t> cursorScratch_, runScratch_, boneRunScratch_, looseScratch_;
+    std::vector<std::uint32_t> runLengthScratch_, boneRunLengthScratch_;
 };
 
 /// out[order[i]] = in[i] for xyz triples (packed, 3 floats a vertex):
