@@ -141,12 +141,20 @@ VkInstance createInstance(bool wantValidation, bool& validation) {
                                  "(Debian: vulkan-validationlayers)\n");
         }
     }
-    // The window system extensions, when the loader has them (the viewer's swapchain).
-    std::uint32_t n = 0;
-    vkEnumerateInstanceExtensionProperties(nullptr, &n, nullptr);
-    std::vector<VkExtensionProperties> available(n);
-    vkEnumerateInstanceExtensionProperties(nullptr, &n, available.data());
-    for (const char* wanted : windowExtensions()) {
+    // The window system extensions, when the loader has them (the viewer's
+    // swapchain). Listed only when some are wanted: each listing makes the
+    // loader read every driver manifest again and open the drivers (about
+    // 9 ms a call with lavapipe), and headless work wants none.
+    const std::vector<const char*> wantedWindow = windowExtensions();
+    std::vector<VkExtensionProperties> available;
+    if (!wantedWindow.empty()) {
+        std::uint32_t n = 0;
+        vkEnumerateInstanceExtensionProperties(nullptr, &n, nullptr);
+        available.resize(n);
+        vkEnumerateInstanceExtensionProperties(nullptr, &n, available.data());
+        available.resize(n);
+    }
+    for (const char* wanted : wantedWindow) {
         bool found = false;
         for (const auto& e : available) found = found || std::strcmp(e.extensionName, wanted) == 0;
         if (!found) throw VulkanError(std::string("m3g-vk: the Vulkan loader lacks the window extension ") + wanted);

@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <exception>
+#include <system_error>
+#include <thread>
 #include <vector>
 
 #include "PipelineCacheFile.h"
@@ -165,6 +169,7 @@ void Pipelines::prewarm(std::uint8_t samples) {
         std::uint16_t modes;
     };
     constexpr LightSetup kSetups[] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 1}, {1, 2, 0 | (1 << 2)}};
+    std::vector<PipelineKey> keys;
     for (std::uint8_t blend = 0; blend < 5; ++blend) {
         for (const LightSetup& setup : kSetups) {
             PipelineKey key;
@@ -174,15 +179,71 @@ void Pipelines::prewarm(std::uint8_t samples) {
             key.lightCount = setup.count;
             key.lightModes = setup.modes;
             key.specular = 0;
-            get(key);
+            keys.push_back(key);
             key.texFunc[0] = 2;  // TEX_MODULATE
             key.texFormat[0] = 1;
-            get(key);
+            keys.push_back(key);
         }
     }
+    createMissing(keys);
+    for (const PipelineKey& key : keys) get(key);
 }
 
 VkPipeline Pipelines::create(const PipelineKey& key) {
+    const VkPipeline pipeline = build(key);
+    ++createdThroughCache_;
+    return pipeline;
+}
+
+void Pipelines::createMissing(std::span<const PipelineKey> keys) {
+    std::vector<PipelineKey> missing;
+    std::uint64_t last = ~0ull;
+    for (const PipelineKey& key : keys) {
+        const std::uint64_t packed = key.packed();
+        if (packed == last) continue;  // runs of draws in one state: one look-up
+        last = packed;
+        if (pipelines_.count(packed) != 0) continue;
+        bool listed = false;
+        for (const PipelineKey& m : missing) listed = listed || m.packed() == packed;
+        if (!listed) missing.push_back(key);
+    }
+    if (missing.size() < 2) return;  // get() creates a lone one where it is needed
+    std::vector<VkPipeline> made(missing.size(), VK_NULL_HANDLE);
+    std::vector<std::exception_ptr> errors(missing.size());
+    std::atomic<std::size_t> next{0};
+    auto work = [&] {
+        for (std::size_t i; (i = next++) < missing.size();) {
+            try {
+                made[i] = build(missing[i]);
+            } catch (...) {
+                errors[i] = std::current_exception();
+            }
+        }
+    };
+    const std::size_t threads = std::min<std::size_t>(missing.size(), std::max(1u, std::thread::hardware_concurrency()));
+    std::vector<std::thread> helpers;
+    for (std::size_t t = 1; t < threads; ++t) {
+        try {
+            helpers.emplace_back(work);
+        } catch (const std::system_error&) {
+            break;  // no more threads: the ones running (and this one) do the rest
+        }
+    }
+    work();
+    for (std::thread& t : helpers) t.join();
+    std::exception_ptr first;
+    for (std::size_t i = 0; i < missing.size(); ++i) {
+        if (made[i] != VK_NULL_HANDLE) {
+            pipelines_.emplace(missing[i].packed(), Entry{made[i], frame_});
+            ++unsaved_;
+            ++createdThroughCache_;
+        }
+        if (errors[i] && !first) first = errors[i];
+    }
+    if (first) std::rethrow_exception(first);
+}
+
+VkPipeline Pipelines::build(const PipelineKey& key) const {
     std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
     // m3g.vert's constant_ids 0..8: LIGHTING, TWO_SIDED, LIGHT_COUNT,
     // LIGHT_MODES, SPECULAR, then the outputs m3g.frag reads: TEX0_USED,
@@ -278,7 +339,6 @@ VkPipeline Pipelines::create(const PipelineKey& key) {
     check(vkCreateGraphicsPipelines(ctx_.device(), cache_, 1, &gi, nullptr, &pipeline), "vkCreateGraphicsPipelines");
     ++ctx_.pipelinesCreated;
     ++ctx_.livePipelines;
-    ++createdThroughCache_;
     return pipeline;
 }
 

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -40,6 +41,11 @@ public:
     /// The pipeline for `key`, created on first use; marked used by the
     /// current frame. Valid until endFrame() of a later frame.
     VkPipeline get(const PipelineKey& key);
+    /// Creates those of `keys` that do not exist yet, several at once when
+    /// more than one is missing (one thread each, up to the hardware
+    /// threads): a first frame's states, or prewarm()'s, compile side by
+    /// side instead of one after another. get() then finds them.
+    void createMissing(std::span<const PipelineKey> keys);
     /// Creates the pipelines of the common keys ahead of the first frame.
     void prewarm(std::uint8_t samples);
     /// Called once the GPU has finished the frame (its fence waited): when
@@ -61,6 +67,10 @@ private:
         std::uint64_t lastFrame = 0;
     };
     VkPipeline create(const PipelineKey& key);
+    /// The pipeline for `key`, counted in the Context's statistics only:
+    /// safe to call from several threads at once (the device and the
+    /// pipeline cache are; nothing of this object changes).
+    VkPipeline build(const PipelineKey& key) const;
     void destroy(VkPipeline pipeline) noexcept;
     /// Writes the VkPipelineCache to cachePath_ when pipelines were created
     /// since the last save (PipelineCacheFile.h).

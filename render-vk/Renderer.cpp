@@ -245,6 +245,13 @@ void Renderer::draw(const frame::Target& target, const frame::ViewState& view, c
                     frame::FrameSources& sources) {
     startFrame(target);
     prepared_.resize(view.scissor.empty() ? 0 : list.draws.size());
+    // The states this list meets for the first time, created side by side.
+    drawKeys_.resize(prepared_.size());
+    for (std::size_t i = 0; i < prepared_.size(); ++i) {
+        drawKeys_[i] = list.draws[i].pipeline;
+        drawKeys_[i].samples = static_cast<std::uint8_t>(target_.samples());
+    }
+    pipelines_->createMissing(drawKeys_);
     for (std::size_t i = 0; i < prepared_.size(); ++i) prepare(list.draws[i], list, sources, prepared_[i]);
     openFrame(target, nullptr, false);
     setView(view);

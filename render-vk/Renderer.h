@@ -73,6 +73,7 @@ private:
     VkViewport viewport_{};
     VkRect2D scissor_{};
     std::vector<PreparedDraw> prepared_;
+    std::vector<frame::PipelineKey> drawKeys_;  // draw()'s scratch: the list's pipeline keys
     PreparedDraw prior_;  // the prior contents' quad of a multisampled frame
     // The pipeline of the previous draw prepared in this frame: consecutive
     // draws mostly share it, and it is already marked used by the frame.
