@@ -199,7 +199,9 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
     const bool tableChanged = inputsChanged || table.revision() != tableRevision_;
     if (tableChanged) {
         valid_ = false;
-        partition_.build(table.bones(), table.weights(), table.maxInfluences(), n);
+        // Short runs of the mesh's order go to the compact space (kMinInPlaceRun).
+        partition_.build(table.bones(), table.weights(), table.maxInfluences(), n,
+                         skin::InfluencePartition::kMinInPlaceRun);
         tableRevision_ = table.revision();
         ++inputStamp_;
     }

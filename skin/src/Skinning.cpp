@@ -200,7 +200,8 @@ void InfluencePartition::build(std::span<const std::int32_t> boneIndices, int st
 }
 
 void InfluencePartition::build(std::span<const std::int32_t> boneIndices, std::span<const float> boneWeights,
-                               int stride, std::size_t vertexCount) {
+                               int stride, std::size_t vertexCount, std::size_t minRun) {
+    minRun = std::max(minRun, kMinRun);
     const int n = stride < 0 ? 0 : stride;
     const auto ns = static_cast<std::size_t>(n);
     const std::size_t tableVertices = ns == 0 ? 0 : boneIndices.size() / ns;
@@ -239,7 +240,7 @@ void InfluencePartition::build(std::span<const std::int32_t> boneIndices, std::s
             std::size_t e = i + 1;
             if (weights && c > 0)
                 while (e < size && g[e] == g[e - 1] + 1 && same(g[i], g[e])) ++e;
-            if (e - i >= kMinRun) {
+            if (e - i >= minRun) {
                 runs_.push_back({g[i], static_cast<std::uint32_t>(e - i), start});
                 start += static_cast<std::uint32_t>(e - i);
             } else {

@@ -138,7 +138,8 @@ bool loadSkinned(benchmark::State& state, const SkinnedFile& file, SkinnedScene&
             const skin::InfluenceTable& table = s->influenceTable();
             skin::InfluencePartition p;
             p.build(table.bones(), table.weights(), table.maxInfluences(),
-                    static_cast<std::size_t>(s->getVertexBuffer()->getVertexCount()));
+                    static_cast<std::size_t>(s->getVertexBuffer()->getVertexCount()),
+                    skin::InfluencePartition::kMinInPlaceRun);
             for (int c = 1; c <= p.maxInfluences(); ++c) {
                 for (const auto& run : p.runs(c)) runVertices += run.vertexCount;
                 for (const auto& run : p.compactRuns(c)) compactRunVertices += run.vertexCount;

@@ -314,7 +314,8 @@ struct Dumper {
         const VertexBuffer* vb = m->getVertexBuffer().get();
         const auto vertices = static_cast<std::size_t>(vb ? vb->getVertexCount() : 0);
         skin::InfluencePartition partition;
-        partition.build(table.bones(), table.weights(), table.maxInfluences(), vertices);
+        partition.build(table.bones(), table.weights(), table.maxInfluences(), vertices,
+                        skin::InfluencePartition::kMinInPlaceRun);  // as MeshDeformer
         std::vector<int> byCount;
         int runs = 0, runVertices = 0, loose = 0, longest = 0;
         int compactRuns = 0, compactRunVertices = 0, compactLoose = 0, boneRuns = 0, boneRunVertices = 0;

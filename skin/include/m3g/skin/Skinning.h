@@ -124,15 +124,23 @@ public:
     /// kernel (from four vertices on, one blend per run costs no more than
     /// the loose path's blend per vertex; BM_SkinRunLength).
     static constexpr std::size_t kMinRun = 4;
+    /// Shortest run of the mesh's order worth keeping in place when the
+    /// caller also skins the compact space (MeshDeformer does; pass it as
+    /// build()'s `minRun`): a shorter one costs a blend and a partly empty
+    /// block of its own, while in the compact space it joins the other
+    /// vertices of its influence set in one run. Copy back included, that
+    /// is faster on every skinned corpus file (docs/skinning.md).
+    static constexpr std::size_t kMinInPlaceRun = 16;
 
     /// Groups vertices [0, vertexCount). `boneIndices` holds
     /// tableVertexCount * stride slots (tableVertexCount may be smaller or
     /// larger than vertexCount). No runs: loose(c) is group(c).
     void build(std::span<const std::int32_t> boneIndices, int stride, std::size_t vertexCount);
-    /// The same, and runs found by comparing the bones and `boneWeights`
-    /// (same layout and size as boneIndices) of neighbouring vertices.
+    /// The same, and runs of `minRun` or more (>= kMinRun) found by
+    /// comparing the bones and `boneWeights` (same layout and size as
+    /// boneIndices) of neighbouring vertices.
     void build(std::span<const std::int32_t> boneIndices, std::span<const float> boneWeights, int stride,
-               std::size_t vertexCount);
+               std::size_t vertexCount, std::size_t minRun = kMinRun);
 
     /// Largest group index (= stride after build()).
     int maxInfluences() const noexcept { return static_cast<int>(offsets_.size()) - 2; }
@@ -149,8 +157,9 @@ public:
     // then weight bit patterns, slot by slot), so that vertices with the
     // same slots that are not neighbours in the mesh (exporters interleave
     // the vertices of different bones) become runs there and are blended
-    // once; the rest stay loose but consecutive, which the list kernel takes
-    // in packed blocks. Slots keep the table's order. Built with the groups,
+    // once; vertices sharing only their bones become bone runs; the rest
+    // stay loose but consecutive, which the list kernel takes in packed
+    // blocks. Slots keep the table's order. Built with the groups,
     // when the table changes (never per frame). A caller gathers the inputs
     // into compact order when they change (compactOrder()[i] is the mesh
     // vertex at compact position i), skins the compact arrays and writes
