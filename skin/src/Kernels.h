@@ -65,6 +65,29 @@ inline bool isIdentityScaleBias(float scale, const std::array<float, 3>& bias) n
     return scale == 1.0f && bias[0] == 0.0f && bias[1] == 0.0f && bias[2] == 0.0f;
 }
 
+/// True when every per-vertex array of `job` is packed xyz (strides 3): what
+/// the kernels' whole-block loads and stores of consecutive vertices need.
+inline bool isPacked(const SkinningJob& job) noexcept {
+    return job.inPositionStride == 3 && job.inNormalStride == 3 && job.outPositionStride == 3 &&
+           job.outNormalStride == 3;
+}
+
+/// The palette entries (as floats) of a bone run's K slots, `bi` being its
+/// first vertex's bones; false when one is outside the palette (the run then
+/// goes vertex by vertex through skinVertexChecked). Shared by the AVX2 and
+/// AVX-512 bone-run kernels.
+template <int K>
+inline bool boneRunEntries(const SkinningJob& job, const std::int32_t* bi, const float* (&e)[4]) noexcept {
+    const std::size_t bones = job.palette.size();
+    bool bad = false;
+    for (int k = 0; k < K; ++k) {
+        const auto b = static_cast<std::uint32_t>(bi[k]);
+        bad |= b >= bones;
+        e[k] = reinterpret_cast<const float*>(job.palette.data() + (b < bones ? b : 0));
+    }
+    return !bad;
+}
+
 /// The run holding position `position` of a validated run sequence (which
 /// has one: position < the runs' total count). Empty runs share the next
 /// run's start and come before it, so the last run starting at or before

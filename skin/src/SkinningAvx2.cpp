@@ -515,7 +515,7 @@ M3G_AVX2 void skinBlocks(const SkinningJob& j, std::size_t begin, std::size_t en
     const std::size_t stride = c.stride;
     // Consecutive vertices, packed xyz arrays: lanes at fixed offsets from
     // the block's first vertex, 256-bit stores.
-    const bool packed = c.inPs == 3 && c.inNs == 3 && outPs == 3 && outNs == 3;
+    const bool packed = isPacked(j);
     const std::size_t safe = c.safeP < c.safeN ? c.safeP : c.safeN;
     const __m256i ramp = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
     const std::size_t total = j.vertices.size();
@@ -674,7 +674,7 @@ M3G_AVX2_INLINE void skinRun(const SkinningJob& j, const BlockContext& c, bool p
 template <int K>
 M3G_AVX2 void skinRuns(const SkinningJob& j, std::size_t begin, std::size_t end) noexcept {
     const BlockContext c = blockContext(j);
-    const bool packed = c.inPs == 3 && c.inNs == 3 && j.outPositionStride == 3 && j.outNormalStride == 3;
+    const bool packed = isPacked(j);
     RunPieces pieces(j.runs, begin, end);
     std::size_t runFirst, first, count;
     while (pieces.next(runFirst, first, count)) skinRun<K>(j, c, packed, runFirst, first, count);
@@ -788,13 +788,7 @@ M3G_AVX2 void skinBoneRuns(const SkinningJob& j, std::size_t begin, std::size_t 
         const std::size_t wholeEnd = runFirst + pieces.runLength() / 8 * 8;
         const std::int32_t* bi = c.boneIndices + runFirst * c.stride;
         const float* e[4] = {};
-        bool bad = false;
-        for (int k = 0; k < K; ++k) {
-            const auto bone = static_cast<std::uint32_t>(bi[k]);
-            bad |= bone >= c.bones;
-            e[k] = reinterpret_cast<const float*>(c.palette + (bone < c.bones ? bone : 0));
-        }
-        if (bad) {
+        if (!boneRunEntries<K>(j, bi, e)) {
             // A slot outside the palette: the checked formula, vertex by vertex.
             for (std::size_t v = first; v < stop; ++v) skinVertexChecked(j, v);
             continue;
@@ -865,9 +859,7 @@ M3G_AVX2 bool skinRunsAvx2(const SkinningJob& job, std::size_t begin, std::size_
 
 M3G_AVX2 bool skinBoneRunsAvx2(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept {
     if (job.inNormals.empty()) return false;
-    if (job.inPositionStride != 3 || job.inNormalStride != 3 || job.outPositionStride != 3 ||
-        job.outNormalStride != 3)
-        return false;
+    if (!isPacked(job)) return false;
     switch (job.influenceCount) {
         case 1: skinBoneRuns<1>(job, begin, end); return true;
         case 2: skinBoneRuns<2>(job, begin, end); return true;

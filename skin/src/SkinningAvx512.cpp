@@ -248,19 +248,12 @@ M3G_AVX512_INLINE void skinBoneBlock(const SkinningJob& j, const float* const (&
 template <int K>
 M3G_AVX512 void skinBoneRuns16(const SkinningJob& j, std::size_t begin, std::size_t end) noexcept {
     const auto stride = static_cast<std::size_t>(j.influenceStride);
-    const std::size_t bones = j.palette.size();
     RunPieces pieces(j.boneRuns, begin, end);
     std::size_t runFirst, first, count;
     while (pieces.next(runFirst, first, count)) {
         const std::int32_t* bi = j.boneIndices.data() + runFirst * stride;
         const float* e[4] = {};
-        bool bad = false;
-        for (int k = 0; k < K; ++k) {
-            const auto b = static_cast<std::uint32_t>(bi[k]);
-            bad |= b >= bones;
-            e[k] = reinterpret_cast<const float*>(j.palette.data() + (b < bones ? b : 0));
-        }
-        if (bad) {
+        if (!boneRunEntries<K>(j, bi, e)) {
             // A slot outside the palette: the checked formula, vertex by vertex.
             for (std::size_t i = 0; i < count; ++i) skinVertexChecked(j, first + i);
             continue;
@@ -274,9 +267,7 @@ M3G_AVX512 void skinBoneRuns16(const SkinningJob& j, std::size_t begin, std::siz
 
 M3G_AVX512 bool skinBoneRunsAvx512(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept {
     if (job.inNormals.empty()) return false;
-    if (job.inPositionStride != 3 || job.inNormalStride != 3 || job.outPositionStride != 3 ||
-        job.outNormalStride != 3)
-        return false;
+    if (!isPacked(job)) return false;
     switch (job.influenceCount) {
         case 1: skinBoneRuns16<1>(job, begin, end); return true;
         case 2: skinBoneRuns16<2>(job, begin, end); return true;
@@ -288,9 +279,7 @@ M3G_AVX512 bool skinBoneRunsAvx512(const SkinningJob& job, std::size_t begin, st
 
 M3G_AVX512 bool skinRunsAvx512(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept {
     if (job.inNormals.empty()) return false;
-    if (job.inPositionStride != 3 || job.inNormalStride != 3 || job.outPositionStride != 3 ||
-        job.outNormalStride != 3)
-        return false;
+    if (!isPacked(job)) return false;
     switch (job.influenceCount) {
         case 0: return false;
         case 1: skinRuns16<1>(job, begin, end); return true;

@@ -326,8 +326,7 @@ void skinRun(const SkinningJob& j, bool packed, std::size_t runFirst, std::size_
 
 template <int K>
 void skinRuns(const SkinningJob& j, std::size_t begin, std::size_t end) noexcept {
-    const bool packed =
-        j.inPositionStride == 3 && j.inNormalStride == 3 && j.outPositionStride == 3 && j.outNormalStride == 3;
+    const bool packed = isPacked(j);
     RunPieces pieces(j.runs, begin, end);
     std::size_t runFirst, first, count;
     while (pieces.next(runFirst, first, count)) skinRun<K>(j, packed, runFirst, first, count);
