@@ -84,6 +84,11 @@ public:
     /// key), computed on the first call after a change. Empty for other
     /// interpolations. Call after validate().
     std::span<const float> splineTangents() const;
+    /// Every interpolation but STEP: one byte per valid key, 1 where the
+    /// segment to the next key holds key j's value throughout
+    /// (detail::flatSegments), computed on the first call after a change.
+    /// Call after validate().
+    std::span<const unsigned char> flatSegments() const;
 
 protected:
     KeyframeSequence(const KeyframeSequence& other);
@@ -106,6 +111,7 @@ private:
     mutable std::vector<float> squad_;     // squadControls(), while samplingReady_
     mutable std::vector<float> arcs_;      // quaternionArcs(), while samplingReady_
     mutable std::vector<float> tangents_;  // splineTangents(), while samplingReady_
+    mutable std::vector<unsigned char> flat_;  // flatSegments(), while samplingReady_
     mutable bool samplingReady_ = false;
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #include <m3g/KeyframeSequence.h>
 
@@ -295,6 +296,7 @@ KeyframeView preparedViewOf(const KeyframeSequence& s) {
     view.squad = s.squadControls();
     view.arcs = s.quaternionArcs();
     view.tangents = s.splineTangents();
+    view.flat = s.flatSegments();
     return view;
 }
 
@@ -364,6 +366,35 @@ void splineTangents(const KeyframeView& k, std::vector<float>& out) {
     }
 }
 
+void flatSegments(const KeyframeView& k, std::vector<unsigned char>& out) {
+    out.clear();
+    if (k.interpolation == KeyframeSequence::STEP) return;
+    const ValidKeys keys(k);
+    const auto comps = std::size_t(k.components);
+    const auto same = [comps](const float* a, const float* b) { return std::memcmp(a, b, comps * sizeof(float)) == 0; };
+    out.resize(std::size_t(keys.count()));
+    std::vector<float> tangents;
+    if (k.interpolation == KeyframeSequence::SPLINE && k.tangents.empty()) splineTangents(k, tangents);
+    const std::span<const float> tangent = k.tangents.empty() ? std::span<const float>(tangents) : k.tangents;
+    for (int j = 0; j < keys.count(); ++j) {
+        const int j1 = keys.next(j);
+        const float* p0 = keys.value(j);
+        bool flat = same(p0, keys.value(j1));
+        if (flat && k.interpolation == KeyframeSequence::SPLINE) {
+            const float* t = tangent.data() + std::size_t(j) * 2 * comps;
+            for (std::size_t c = 0; c < 2 * comps; ++c) flat = flat && t[c] == 0.0f;
+        }
+        if (flat && k.interpolation == KeyframeSequence::SQUAD) {
+            const bool cached = !k.squad.empty();
+            const Quatf a = cached ? squadControl(k, j, 0) : toFloat(squadA(keys, j));
+            const Quatf b = cached ? squadControl(k, j1, 1) : toFloat(squadB(keys, j1));
+            const float ab[8] = {a.x, a.y, a.z, a.w, b.x, b.y, b.z, b.w};
+            flat = same(p0, ab) && same(p0, ab + 4);
+        }
+        out[std::size_t(j)] = flat ? 1 : 0;
+    }
+}
+
 SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<float> out, int* segment) {
     const ValidKeys keys(k);
     const int n = keys.count();
@@ -400,7 +431,7 @@ SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<flo
         copyKey(keys, j, comps, out);
         return {t0 + delta - s, s - t0};
     }
-    if (s == t0 || !(delta > 0.0)) {
+    if (s == t0 || !(delta > 0.0) || (!k.flat.empty() && k.flat[std::size_t(j)])) {
         copyKey(keys, j, comps, out);
         return {0.0, 0.0};
     }

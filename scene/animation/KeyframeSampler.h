@@ -38,6 +38,11 @@ struct KeyframeView {
     /// the next key), as splineTangents() computes them; empty: computed per
     /// sample.
     std::span<const float> tangents = {};
+    /// Every interpolation but STEP: one byte per valid key j, 1 where the
+    /// segment from j to the next key samples to key j's value at every
+    /// time (flatSegments says when), as KeyframeSequence::flatSegments()
+    /// computes them; empty: every segment interpolated.
+    std::span<const unsigned char> flat = {};
     /// 1 / duration, for mapping looping time without a division (viewOf
     /// sets it); 0: divided per sample.
     double inverseDuration = 0.0;
@@ -93,6 +98,20 @@ void keyframeArcs(const KeyframeView& k, std::vector<float>& out);
 /// that rounding only: about 1e-7 of the tangent, times a Hermite weight of
 /// at most 4/27.
 void splineTangents(const KeyframeView& k, std::vector<float>& out);
+
+/// The flat segments of a valid view into `out` (KeyframeView::flat, one
+/// byte per valid key; nothing for STEP, which copies keys anyway): segment
+/// j is flat when everything its samples read is key j's value bit for bit,
+/// so that each would compute that value again. LINEAR and SLERP: key j and
+/// the next equal. SPLINE: also both tangents (from k.tangents, or computed
+/// as splineTangents would) exactly 0. SQUAD: also the control quaternions
+/// A_j and B of the next key (k.squad, or computed) equal to key j.
+/// Exported clips hold bones still between equal keys for long stretches
+/// (otokka_jump2.m3g: a third of its SQUAD time, nearly all of its SPLINE
+/// and LINEAR time); sampling copies the key there instead of three SLERPs
+/// or a Hermite blend in double. The result is the same value (a -0
+/// component may come back as +0 from the arithmetic, never from the copy).
+void flatSegments(const KeyframeView& k, std::vector<unsigned char>& out);
 
 /// Samples a valid view (see keyframeProblem) at sequence time `time` into
 /// `out` (at least k.components floats). Quaternion results (SLERP, SQUAD)

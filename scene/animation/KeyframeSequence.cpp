@@ -105,6 +105,7 @@ void KeyframeSequence::prepareSampling() const {
     squad_.clear();
     arcs_.clear();
     tangents_.clear();
+    flat_.clear();
     detail::KeyframeView view = detail::viewOf(*this);
     if (interpolation_ == SQUAD) {
         detail::squadControls(view, squad_);
@@ -112,6 +113,9 @@ void KeyframeSequence::prepareSampling() const {
     }
     detail::keyframeArcs(view, arcs_);
     detail::splineTangents(view, tangents_);
+    view.arcs = arcs_;
+    view.tangents = tangents_;
+    detail::flatSegments(view, flat_);
     samplingReady_ = true;
 }
 
@@ -128,6 +132,11 @@ std::span<const float> KeyframeSequence::quaternionArcs() const {
 std::span<const float> KeyframeSequence::splineTangents() const {
     if (!samplingReady_) prepareSampling();
     return tangents_;
+}
+
+std::span<const unsigned char> KeyframeSequence::flatSegments() const {
+    if (!samplingReady_) prepareSampling();
+    return flat_;
 }
 
 void KeyframeSequence::validate() const {

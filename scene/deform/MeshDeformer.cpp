@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <typeinfo>
 
 #include <m3g/MorphingMesh.h>
 #include <m3g/SkinnedMesh.h>
@@ -160,6 +161,9 @@ bool MeshDeformer::update(const Mesh& mesh, Output output) {
     // A result made for the other output is not a result for this one.
     if (output != output_) valid_ = false;
     output_ = output;
+    // The exact class first: a type_info comparison rather than a
+    // dynamic_cast's walk, once per SkinnedMesh per frame.
+    if (typeid(mesh) == typeid(SkinnedMesh)) return updateSkinned(static_cast<const SkinnedMesh&>(mesh));
     if (const auto* skinned = dynamic_cast<const SkinnedMesh*>(&mesh)) return updateSkinned(*skinned);
     if (const auto* morphing = dynamic_cast<const MorphingMesh*>(&mesh)) return updateMorphing(*morphing);
     out_ = DeformedVertices{};

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include <m3g/AnimationTrack.h>
 
@@ -11,6 +12,17 @@
 namespace m3g {
 
 namespace {
+/// A setter given the value the object already holds, bit for bit, changes
+/// nothing and leaves the revision alone: animate() sets every animated
+/// property each frame, and a bone held still through a segment of equal
+/// keys (common in exported clips) then keeps its composite transform, its
+/// bone matrix and its palette entry instead of having them composed again.
+/// Bits, not ==: -0 and +0 stay distinct changes, a NaN is always one.
+template <std::size_t N>
+bool sameBits(const std::array<float, N>& a, const std::array<float, N>& b) noexcept {
+    return std::memcmp(a.data(), b.data(), sizeof(float) * N) == 0;
+}
+
 glm::quat toGlmQuat(const std::array<float, 4>& q) { return glm::quat(q[3], q[0], q[1], q[2]); }
 
 glm::quat axisAngleOrThrow(float angle, float ax, float ay, float az, const char* where) {
@@ -26,10 +38,11 @@ Transformable::Transformable() = default;
 
 void Transformable::setOrientationQuat(float qx, float qy, float qz, float qw) noexcept {
     const float len = std::sqrt(qx * qx + qy * qy + qz * qz + qw * qw);
-    if (len > 0.0f && std::isfinite(len))
-        q_ = {qx / len, qy / len, qz / len, qw / len};
-    else
-        q_ = {0, 0, 0, 1};
+    const std::array<float, 4> q = len > 0.0f && std::isfinite(len)
+                                       ? std::array<float, 4>{qx / len, qy / len, qz / len, qw / len}
+                                       : std::array<float, 4>{0, 0, 0, 1};
+    if (sameBits(q, q_)) return;
+    q_ = q;
     transformChanged();
 }
 
@@ -66,7 +79,9 @@ void Transformable::getOrientation(std::span<float> angleAxis) const {
 }
 
 void Transformable::setScale(float sx, float sy, float sz) {
-    s_ = {sx, sy, sz};
+    const std::array<float, 3> s{sx, sy, sz};
+    if (sameBits(s, s_)) return;
+    s_ = s;
     transformChanged();
 }
 
@@ -83,7 +98,9 @@ void Transformable::getScale(std::span<float> xyz) const {
 }
 
 void Transformable::setTranslation(float tx, float ty, float tz) {
-    t_ = {tx, ty, tz};
+    const std::array<float, 3> t{tx, ty, tz};
+    if (sameBits(t, t_)) return;
+    t_ = t;
     transformChanged();
 }
 

@@ -507,3 +507,65 @@ TEST(KeyframeSampler, SplineTangentsCachedAgreeAndFollowChanges) {
     auto linear = makeSeq(KeyframeSequence::LINEAR, KeyframeSequence::LOOP, 10, {{0, {1}}, {5, {2}}});
     EXPECT_TRUE(linear->splineTangents().empty());
 }
+
+// Flat segments (KeyframeSequence::flatSegments, as animate() samples): a
+// segment is flat exactly where everything its samples read equals key j,
+// worked out here from the keys: LINEAR and SLERP need the two keys equal;
+// SPLINE and SQUAD also read the neighbours (tangents, control quaternions),
+// so a looping hold of four equal keys A A A A B has one flat segment, 1 -> 2
+// (0 -> 1 reads B before it, 2 -> 3 reads B after it). A CONSTANT sequence's
+// end tangents are 0 whatever the neighbours. Sampling with the flags gives
+// the same values as interpolating (== on floats: a -0 may become +0).
+TEST(KeyframeSampler, FlatSegmentsHoldTheKeyAndSampleTheSame) {
+    const std::vector<float> a = zQuat(10), b = zQuat(40), c = zQuat(-25);
+    const std::vector<float> p = {1.5f, -2, 0.25f}, q = {3, 1, -4}, r = {-1, 0.5f, 2};
+    struct Case {
+        int interp;
+        int repeat;
+        std::vector<Key> keys;
+        std::vector<unsigned char> flat;
+    };
+    const std::vector<Case> cases = {
+        // A A B C C: 0 -> 1 and 3 -> 4 hold, 4 -> 0 wraps to a different key.
+        {KeyframeSequence::LINEAR, KeyframeSequence::LOOP, {{0, p}, {10, p}, {20, q}, {35, r}, {50, r}}, {1, 0, 0, 1, 0}},
+        {KeyframeSequence::SLERP, KeyframeSequence::LOOP, {{0, a}, {10, a}, {20, b}, {35, c}, {50, c}}, {1, 0, 0, 1, 0}},
+        {KeyframeSequence::SPLINE, KeyframeSequence::LOOP, {{0, p}, {10, p}, {20, p}, {35, p}, {50, q}}, {0, 1, 0, 0, 0}},
+        {KeyframeSequence::SQUAD, KeyframeSequence::LOOP, {{0, a}, {10, a}, {20, a}, {35, a}, {50, b}}, {0, 1, 0, 0, 0}},
+        // CONSTANT: the first key's outgoing tangent is 0, key 2 = key 0.
+        {KeyframeSequence::SPLINE, KeyframeSequence::CONSTANT, {{0, p}, {10, p}, {20, p}, {35, q}}, {1, 0, 0, 0}},
+        {KeyframeSequence::STEP, KeyframeSequence::LOOP, {{0, p}, {10, p}, {20, q}}, {}},
+    };
+    for (const Case& k : cases) {
+        auto s = makeSeq(k.interp, k.repeat, 70, k.keys);
+        s->validate();
+        const std::span<const unsigned char> flat = s->flatSegments();
+        ASSERT_EQ(std::vector<unsigned char>(flat.begin(), flat.end()), k.flat) << "interpolation " << k.interp;
+        // The view without the flags (per sample) and with the kept data.
+        const detail::KeyframeView plain = detail::viewOf(*s);
+        const detail::KeyframeView kept = detail::preparedViewOf(*s);
+        ASSERT_EQ(kept.flat.size(), k.flat.size());
+        const std::size_t n = std::size_t(s->getComponentCount());
+        for (double t = -20.0; t <= 160.0; t += 0.7) {
+            std::vector<float> x(n), y(n);
+            detail::sampleKeyframes(plain, t, x);
+            detail::sampleKeyframes(kept, t, y);
+            for (std::size_t i = 0; i < n; ++i)
+                ASSERT_NEAR(x[i], y[i], 2e-6f) << "interpolation " << k.interp << ", time " << t << ", component " << i;
+        }
+        // Inside a flat segment the sample is the key itself.
+        for (std::size_t j = 0; j < k.flat.size(); ++j) {
+            if (!k.flat[j]) continue;
+            std::vector<float> y(n);
+            detail::sampleKeyframes(kept, k.keys[j].time + 3.5, y);
+            for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(y[i], k.keys[j].value[i]) << "segment " << j;
+        }
+    }
+    // A change of a key recomputes the flags.
+    auto s = makeSeq(KeyframeSequence::LINEAR, KeyframeSequence::LOOP, 70, {{0, p}, {10, p}, {20, q}});
+    s->validate();
+    EXPECT_EQ(s->flatSegments()[0], 1);
+    s->setKeyframe(1, 10, q);
+    s->validate();
+    EXPECT_EQ(s->flatSegments()[0], 0);
+    EXPECT_EQ(s->flatSegments()[1], 1);
+}

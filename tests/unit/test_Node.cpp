@@ -94,6 +94,33 @@ TEST(Transformable, NodeRejectsProjectiveMatrix) {
     EXPECT_TRUE(m == Transform());
 }
 
+// Setting the value a Transformable already holds (bit for bit, the
+// orientation after its normalisation) changes nothing and leaves the
+// revision alone, so that animate() holding a bone still does not make its
+// skinned meshes compose it again; any other value, -0 for +0 included,
+// counts as a change.
+TEST(Transformable, SettingTheHeldValueKeepsTheRevision) {
+    Ref<Group> g = make<Group>();
+    g->setTranslation(1, 2, 3);
+    g->setScale(2, 2, 0.5f);
+    g->setOrientationQuat(0, 0, 3, 4);  // normalised to (0, 0, 0.6, 0.8)
+    const auto r = g->getRevision();
+    g->setTranslation(1, 2, 3);
+    g->setScale(2, 2, 0.5f);
+    g->setOrientationQuat(0, 0, 3, 4);
+    EXPECT_EQ(g->getRevision(), r);
+    g->setTranslation(1, 2, 3.5f);
+    EXPECT_GT(g->getRevision(), r);
+    const auto r2 = g->getRevision();
+    g->setTranslation(0, 0, 0);
+    g->setTranslation(-0.0f, 0, 0);
+    EXPECT_EQ(g->getRevision(), r2 + 2);
+    g->setScale(2, 2, 0.25f);
+    EXPECT_EQ(g->getRevision(), r2 + 3);
+    g->setOrientationQuat(0, 0, 0, 1);
+    EXPECT_EQ(g->getRevision(), r2 + 4);
+}
+
 TEST(Transformable, CompositeIsTRSM) {
     // C = T(10,0,0) * Rz(90) * S(2,1,1) * M(translate 0,1,0):
     // p = (1,0,0): M -> (1,1,0); S -> (2,1,0); Rz90 -> (-1,2,0); T -> (9,2,0).
