@@ -72,13 +72,18 @@ void Transform::transpose() noexcept {
 }
 
 Transform Transform::operator*(const Transform& o) const noexcept {
+    // Each entry is ((((0 + a0 b0) + a1 b1) + a2 b2) + a3 b3), as the
+    // textbook loop sums it; with the column innermost the compiler adds
+    // whole rows of `o` at once (bone paths compose one per node per frame).
     Transform out;
-    for (int r = 0; r < 4; ++r)
-        for (int c = 0; c < 4; ++c) {
-            float s = 0.0f;
-            for (int k = 0; k < 4; ++k) s += m_[r * 4 + k] * o.m_[k * 4 + c];
-            out.m_[r * 4 + c] = s;
+    for (int r = 0; r < 4; ++r) {
+        float row[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        for (int k = 0; k < 4; ++k) {
+            const float a = m_[r * 4 + k];
+            for (int c = 0; c < 4; ++c) row[c] += a * o.m_[k * 4 + c];
         }
+        for (int c = 0; c < 4; ++c) out.m_[r * 4 + c] = row[c];
+    }
     return out;
 }
 

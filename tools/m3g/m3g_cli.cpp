@@ -10,8 +10,12 @@
 
 #include "CliApp.h"
 #include "Commands.h"
+#include "DriverFilter.h"
 
 int main(int argc, char** argv) {
+    // Before any Vulkan call: GPU drivers without their device nodes are
+    // not loaded (DriverFilter.h).
+    m3gcli::skipDriversWithoutDevices();
     CLI::App root;
     m3gcli::CommandTable table;
     m3gcli::configureRoot(root);
