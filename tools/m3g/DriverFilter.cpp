@@ -12,8 +12,14 @@ DeviceNodes findDeviceNodes(const std::filesystem::path& dev) {
     std::error_code ec;
     for (fs::directory_iterator it(dev / "dri", ec), end; !ec && it != end; it.increment(ec))
         if (it->path().filename().string().rfind("renderD", 0) == 0) nodes.renderNode = true;
-    nodes.nvidia = fs::exists(dev / "nvidiactl", ec);
-    nodes.dxg = fs::exists(dev / "dxg", ec);
+    // Any /dev/nvidia* (nvidiactl, nvidia0, ...): a container may pass the
+    // nodes through in any combination, and keeping the driver is the safe side.
+    ec.clear();
+    for (fs::directory_iterator it(dev, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name.rfind("nvidia", 0) == 0) nodes.nvidia = true;
+        if (name == "dxg") nodes.dxg = true;
+    }
     return nodes;
 }
 

@@ -17,7 +17,7 @@ namespace m3gcli {
 /// The device nodes GPU drivers open (Linux).
 struct DeviceNodes {
     bool renderNode = false;  // /dev/dri/renderD*: every Mesa GPU driver
-    bool nvidia = false;      // /dev/nvidiactl: NVIDIA's driver
+    bool nvidia = false;      // /dev/nvidia*: NVIDIA's driver
     bool dxg = false;         // /dev/dxg: Mesa's dzn on WSL
 };
 
@@ -26,8 +26,8 @@ DeviceNodes findDeviceNodes(const std::filesystem::path& dev);
 
 /// Comma-separated loader globs (matched against driver manifest file
 /// names) of the drivers that cannot find a device without the missing
-/// nodes: Mesa's GPU drivers without a render node, NVIDIA's without
-/// /dev/nvidiactl, dzn without /dev/dxg; empty when nothing is missing.
+/// nodes: Mesa's GPU drivers without a render node, NVIDIA's without a
+/// /dev/nvidia* node, dzn without /dev/dxg; empty when nothing is missing.
 /// Software drivers (lavapipe, SwiftShader) and drivers not named here are
 /// never listed.
 std::string driverGlobsToDisable(const DeviceNodes& nodes);
