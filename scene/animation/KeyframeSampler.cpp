@@ -213,6 +213,15 @@ Quatf squadControl(const KeyframeView& k, int j, int which) {
     return {c[0], c[1], c[2], c[3]};
 }
 
+/// A_j and B_j of valid key j: the view's kept controls when it has them,
+/// else computed (in double, rounded once) as squadControls would.
+Quatf controlA(const KeyframeView& k, const ValidKeys& keys, int j) {
+    return k.squad.empty() ? toFloat(squadA(keys, j)) : squadControl(k, j, 0);
+}
+Quatf controlB(const KeyframeView& k, const ValidKeys& keys, int j) {
+    return k.squad.empty() ? toFloat(squadB(keys, j)) : squadControl(k, j, 1);
+}
+
 Arc arcFrom(std::span<const float> arcs, int index) {
     const float* a = arcs.data() + std::size_t(index) * kArcFloats;
     return {{a[0], a[1], a[2], a[3]}, a[4], static_cast<Arc::Kind>(int(a[5]))};
@@ -264,8 +273,7 @@ void writeQuat(const Quatf& q, std::span<float> out) {
 [[gnu::noinline]] void squadPerSample(const KeyframeView& k, const ValidKeys& keys, int j, double u,
                                       std::span<float> out) {
     const int j1 = keys.next(j);
-    const bool cached = !k.squad.empty();
-    const Quatf a = cached ? squadControl(k, j, 0) : toFloat(squadA(keys, j));
+    const Quatf a = controlA(k, keys, j);
     const float uf = float(u);
     const float* p0 = keys.value(j);
     Quatf keyPoint, controlPoint;
@@ -273,7 +281,7 @@ void writeQuat(const Quatf& q, std::span<float> out) {
         keyPoint = arcAt(quatfAt(p0), arcFrom(k.arcs, 2 * j), uf);
         controlPoint = arcAt(a, arcFrom(k.arcs, 2 * j + 1), uf);
     } else {
-        const Quatf b = cached ? squadControl(k, j1, 1) : toFloat(squadB(keys, j1));
+        const Quatf b = controlB(k, keys, j1);
         keyPoint = slerp(quatfAt(p0), quatfAt(keys.value(j1)), uf);
         controlPoint = slerp(a, b, uf);
     }
@@ -336,12 +344,7 @@ void keyframeArcs(const KeyframeView& k, std::vector<float>& out) {
         const int j1 = keys.next(j);
         float* dst = out.data() + std::size_t(j) * perKey * kArcFloats;
         putArc(arcOf(quatfAt(keys.value(j)), quatfAt(keys.value(j1))), dst);
-        if (squad) {
-            const bool cached = !k.squad.empty();
-            const Quatf a = cached ? squadControl(k, j, 0) : toFloat(squadA(keys, j));
-            const Quatf b = cached ? squadControl(k, j1, 1) : toFloat(squadB(keys, j1));
-            putArc(arcOf(a, b), dst + kArcFloats);
-        }
+        if (squad) putArc(arcOf(controlA(k, keys, j), controlB(k, keys, j1)), dst + kArcFloats);
     }
 }
 
@@ -385,9 +388,7 @@ void flatSegments(const KeyframeView& k, std::vector<unsigned char>& out) {
             for (std::size_t c = 0; c < 2 * comps; ++c) flat = flat && t[c] == 0.0f;
         }
         if (flat && k.interpolation == KeyframeSequence::SQUAD) {
-            const bool cached = !k.squad.empty();
-            const Quatf a = cached ? squadControl(k, j, 0) : toFloat(squadA(keys, j));
-            const Quatf b = cached ? squadControl(k, j1, 1) : toFloat(squadB(keys, j1));
+            const Quatf a = controlA(k, keys, j), b = controlB(k, keys, j1);
             const float ab[8] = {a.x, a.y, a.z, a.w, b.x, b.y, b.z, b.w};
             flat = same(p0, ab) && same(p0, ab + 4);
         }

@@ -113,8 +113,7 @@ void KeyframeSequence::prepareSampling() const {
     }
     detail::keyframeArcs(view, arcs_);
     detail::splineTangents(view, tangents_);
-    view.arcs = arcs_;
-    view.tangents = tangents_;
+    view.tangents = tangents_;  // flatSegments reads the kept tangents and controls
     detail::flatSegments(view, flat_);
     samplingReady_ = true;
 }
