@@ -17,8 +17,9 @@ namespace m3g {
 /// Transform reference that may be null.
 class M3G_API Transform {
 public:
-    /// Identity.
-    Transform() noexcept;
+    /// Identity. Inline, as fromRows: every node of every frame's bone paths
+    /// and render queue makes a few of these.
+    Transform() noexcept : m_{1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f} {}
     Transform(const Transform& other) noexcept = default;
     Transform& operator=(const Transform& other) noexcept = default;
 
@@ -62,7 +63,11 @@ public:
     /// this * other, as a new Transform.
     Transform operator*(const Transform& other) const noexcept;
     /// Builds a transform from 16 row-major values.
-    static Transform fromRows(const std::array<float, 16>& rows) noexcept;
+    static Transform fromRows(const std::array<float, 16>& rows) noexcept {
+        Transform t;  // the identity's stores are dead once inlined
+        t.m_ = rows;
+        return t;
+    }
 
 private:
     std::array<float, 16> m_;

@@ -177,11 +177,16 @@ bool MeshDeformer::update(const Mesh& mesh, Output output) {
 bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
     // The raw pointer: getVertexBuffer()'s Ref costs two atomic operations.
     const VertexBuffer& vb = *mesh.vertexBuffer();
-    newSources_.clear();
-    addSource(&vb);
-    addSource(vb.positions());
-    addSource(vb.normals());
-    const bool inputsChanged = sourcesChanged(Kind::Skinned, mesh) || !valid_;
+    // A fixed set of three: compared in place (sourcesChanged's list is for
+    // the MorphingMesh's variable one).
+    auto source = [](const Object3D* o) { return o ? Source{o->getObjectId(), o->getRevision()} : Source{}; };
+    const SkinnedSources now{source(&vb), source(vb.positions()), source(vb.normals())};
+    const bool inputsChanged =
+        kind_ != Kind::Skinned || mesh.getObjectId() != meshId_ || now != skinnedSources_ || !valid_;
+    kind_ = Kind::Skinned;
+    meshId_ = mesh.getObjectId();
+    skinnedSources_ = now;
+    sources_.clear();
     const auto n = static_cast<std::size_t>(vb.getVertexCount());
     if (inputsChanged) {
         valid_ = false;
@@ -227,6 +232,7 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
                 std::copy_n(rawPositions_.data() + v * 3, 3, compactPositions_.data() + i * 3);
                 if (normals) std::copy_n(baseNormals_.data() + v * 3, 3, compactNormals_.data() + i * 3);
             }
+        planGroups();
     }
 
     // The palette, once per bone: (bone -> mesh now) x (at rest). The
@@ -302,14 +308,12 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
     // mix bones).
     const int stride = table.maxInfluences();
     bool compactRan = false;
-    for (int c = kept ? 1 : 0; c <= partition_.maxInfluences(); ++c) {
-        const auto group = partition_.group(c);
-        if (group.empty()) continue;
+    for (const GroupPlan& g : groups_) {
+        const int c = g.count;
+        if (c == 0 && kept) continue;
         skin::SkinningJob job;
-        // With the compact space, the loose vertices go there (below).
-        if (c == 0 || !compact_) job.vertices = partition_.loose(c);
-        job.runs = partial ? movedRuns(partition_.runs(c), table.bones(), stride, c, entryChanged_, movedRuns_)
-                           : partition_.runs(c);
+        job.vertices = g.vertices;
+        job.runs = partial ? movedRuns(g.runs, table.bones(), stride, c, entryChanged_, movedRuns_) : g.runs;
         job.vertexCount = n;
         job.influenceCount = c;
         job.influenceStride = stride;
@@ -326,19 +330,17 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         job.inNormals = baseNormals_;
         job.outNormals = out_.normals;
         if (!job.vertices.empty() || !job.runs.empty())
-            require(group.size() >= kParallelVertices ? job.runParallel(skin::ThreadPool::shared(), kGrain) : job.run(),
-                    "skinning job");
-        if (c == 0 || !compact_ || partition_.loose(c).empty()) continue;
+            require(g.parallel ? job.runParallel(skin::ThreadPool::shared(), kGrain) : job.run(), "skinning job");
+        if (!g.compact) continue;
         // The compact vertices with c influences (runs and loose ones) in the
         // compact arrays, written back to their mesh vertices below.
-        job.vertices = partition_.compactLoose(c);
-        job.runs = partial ? movedRuns(partition_.compactRuns(c), partition_.compactBones(), stride, c, entryChanged_,
-                                       movedRuns_)
-                           : partition_.compactRuns(c);
+        job.vertices = g.compactVertices;
+        job.runs = partial ? movedRuns(g.compactRuns, partition_.compactBones(), stride, c, entryChanged_, movedRuns_)
+                           : g.compactRuns;
         // A bone run's vertices share its bones: it moved with them.
-        job.boneRuns = partial ? movedRuns(partition_.compactBoneRuns(c), partition_.compactBones(), stride, c,
-                                           entryChanged_, movedBoneRuns_)
-                               : partition_.compactBoneRuns(c);
+        job.boneRuns = partial ? movedRuns(g.compactBoneRuns, partition_.compactBones(), stride, c, entryChanged_,
+                                           movedBoneRuns_)
+                               : g.compactBoneRuns;
         if (job.vertices.empty() && job.runs.empty() && job.boneRuns.empty()) continue;
         job.vertexCount = partition_.compactOrder().size();
         job.boneIndices = partition_.compactBones();
@@ -347,8 +349,7 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         job.outPositions = compactOutPositions_;
         job.inNormals = compactNormals_;
         job.outNormals = compactOutNormals_;
-        require(group.size() >= kParallelVertices ? job.runParallel(skin::ThreadPool::shared(), kGrain) : job.run(),
-                "skinning job");
+        require(g.parallel ? job.runParallel(skin::ThreadPool::shared(), kGrain) : job.run(), "skinning job");
         compactRan = true;
     }
     if (compact_ && compactRan && output_ == Output::Vertices) {
@@ -361,6 +362,25 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
     }
     finish();
     return true;
+}
+
+void MeshDeformer::planGroups() {
+    groups_.clear();
+    for (int c = 0; c <= partition_.maxInfluences(); ++c) {
+        const auto group = partition_.group(c);
+        if (group.empty()) continue;
+        GroupPlan& g = groups_.emplace_back();
+        g.count = c;
+        g.parallel = group.size() >= kParallelVertices;
+        // With the compact space, the loose vertices with influences go there.
+        if (c == 0 || !compact_) g.vertices = partition_.loose(c);
+        g.runs = partition_.runs(c);
+        g.compact = c > 0 && compact_ && !partition_.loose(c).empty();
+        if (!g.compact) continue;
+        g.compactVertices = partition_.compactLoose(c);
+        g.compactRuns = partition_.compactRuns(c);
+        g.compactBoneRuns = partition_.compactBoneRuns(c);
+    }
 }
 
 bool MeshDeformer::updateMorphing(const MorphingMesh& mesh) {

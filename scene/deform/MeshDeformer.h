@@ -106,7 +106,23 @@ private:
     };
     enum class Kind { None, Skinned, Morphing };
 
+    /// A skinned mesh's three sources: its VertexBuffer, positions, normals.
+    using SkinnedSources = std::array<Source, 3>;
+    /// The skinning jobs of one influence count, as the partition gives them
+    /// (listed once per change of the table or the inputs, not per frame).
+    struct GroupPlan {
+        int count = 0;
+        bool parallel = false;                            // large enough for the thread pool
+        std::span<const std::uint32_t> vertices;          // mesh-order list (no compact space)
+        std::span<const skin::InfluenceRun> runs;         // mesh-order runs
+        bool compact = false;                             // has compact vertices
+        std::span<const std::uint32_t> compactVertices;   // compact loose positions
+        std::span<const skin::InfluenceRun> compactRuns, compactBoneRuns;
+    };
+
     bool updateSkinned(const SkinnedMesh& mesh);
+    /// Lists groups_ from partition_ (after a change of the table or inputs).
+    void planGroups();
     bool updateMorphing(const MorphingMesh& mesh);
     /// Records `mesh`'s kind and id and whether `sources` equal the stored
     /// ones (then swaps them in). True when anything differs.
@@ -126,6 +142,7 @@ private:
     bool valid_ = false;
     std::vector<Source> sources_;      // VertexBuffers and VertexArrays, fixed order
     std::vector<Source> newSources_;   // scratch of update()
+    SkinnedSources skinnedSources_{};  // SkinnedMesh: what sources_ holds for a MorphingMesh
 
     // ---- SkinnedMesh: inputs as floats (rebuilt when a source changes) ----
     std::vector<float> rawPositions_;  // unscaled; scale and bias go to the kernel
@@ -139,6 +156,7 @@ private:
     std::vector<float> compactPositions_, compactNormals_;
     std::vector<float> compactOutPositions_, compactOutNormals_;
     bool compact_ = false;
+    std::vector<GroupPlan> groups_;    // the non-empty groups, ascending count
     BoneTransforms boneTransforms_;
     std::vector<float> boneMatrices_;  // 16 per bone: bone -> mesh now
     std::vector<float> atRest_;        // 16 per bone

@@ -29,8 +29,6 @@ glm::mat4 quatToMatrix(const glm::quat& q) noexcept { return glm::mat4_cast(q); 
 using detail::fromGlm;
 using detail::toGlm;
 
-Transform::Transform() noexcept { setIdentity(); }
-
 void Transform::setIdentity() noexcept {
     m_.fill(0.0f);
     m_[0] = m_[5] = m_[10] = m_[15] = 1.0f;
@@ -85,12 +83,6 @@ Transform Transform::operator*(const Transform& o) const noexcept {
         for (int c = 0; c < 4; ++c) out.m_[r * 4 + c] = row[c];
     }
     return out;
-}
-
-Transform Transform::fromRows(const std::array<float, 16>& rows) noexcept {
-    Transform t;
-    t.m_ = rows;
-    return t;
 }
 
 void Transform::postMultiply(const Transform* transform) {

@@ -57,11 +57,15 @@ bool isaSupported(Isa isa) noexcept {
 
 Isa resolveIsa(Isa isa) noexcept {
     if (isa != Isa::Auto) return isa;
-    const Isa limit = autoLimit();
-    if (limit == Isa::Avx512 && isaSupported(Isa::Avx512)) return Isa::Avx512;
-    if ((limit == Isa::Avx2 || limit == Isa::Avx512) && isaSupported(Isa::Avx2)) return Isa::Avx2;
-    if (limit != Isa::Scalar && isaSupported(Isa::Sse2)) return Isa::Sse2;
-    return Isa::Scalar;
+    // Resolved once: every skinning and palette job of every mesh asks.
+    static const Isa resolved = [] {
+        const Isa limit = autoLimit();
+        if (limit == Isa::Avx512 && isaSupported(Isa::Avx512)) return Isa::Avx512;
+        if ((limit == Isa::Avx2 || limit == Isa::Avx512) && isaSupported(Isa::Avx2)) return Isa::Avx2;
+        if (limit != Isa::Scalar && isaSupported(Isa::Sse2)) return Isa::Sse2;
+        return Isa::Scalar;
+    }();
+    return resolved;
 }
 
 const char* isaName(Isa isa) noexcept {
