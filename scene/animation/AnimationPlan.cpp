@@ -125,7 +125,7 @@ void AnimationPlan::build(Object3D& root) {
     targets_.clear();
     properties_.clear();
     tracks_.clear();
-    std::size_t widest = 0;
+    std::size_t widest = 0, sampleFloats = 0;
 
     WalkScratch local;  // only if a walk is re-entered (not expected)
     WalkScratch& s = tlsWalk.busy ? local : tlsWalk;
@@ -157,8 +157,10 @@ void AnimationPlan::build(Object3D& root) {
                 // holds both for as long as this plan is current.
                 const KeyframeSequence* sequence = track.getKeyframeSequence().get();
                 components = sequence->getComponentCount();  // the same for every track on a property
-                if (const AnimationController* c = track.getController().get())
-                    tracks_.push_back({sequence, c, 0, kNotPrepared, {}});
+                if (const AnimationController* c = track.getController().get()) {
+                    tracks_.push_back({sequence, c, 0, kNotPrepared, {}, static_cast<std::uint32_t>(sampleFloats), 0.0f});
+                    sampleFloats += std::size_t(components);
+                }
             }
             if (tracks_.size() > firstTrack) {
                 properties_.push_back(
@@ -174,53 +176,67 @@ void AnimationPlan::build(Object3D& root) {
         for (auto it = s.refs.rbegin(); it != s.refs.rend(); ++it) s.stack.push_back(*it);
     }
     s.lastReachable = s.seen.size();
-    if (sum_.size() < widest) {
-        sum_.resize(widest);
-        sample_.resize(widest);
-    }
+    if (sum_.size() < widest) sum_.resize(widest);
+    if (samples_.size() < sampleFloats) samples_.resize(sampleFloats);
     generation_ = generation;
 }
 
 int AnimationPlan::apply(int worldTime) {
+    // Two passes: every track is sampled first, then each property blended
+    // and applied. The samples of different tracks do not depend on one
+    // another (no animatable property is read by sampling: controllers and
+    // sequences have none), so with nothing between them the core overlaps
+    // their arithmetic (a SQUAD sample is a long chain of dependent float
+    // operations) instead of waiting for each, then for the setter.
     double validity = kForever;
+    for (Track& track : tracks_) {
+        track.weight = 0.0f;
+        const AnimationController& c = *track.controller;
+        const int start = c.getActiveIntervalStart(), stop = c.getActiveIntervalEnd();
+        if (!c.isActive(worldTime)) {
+            if (worldTime < start) validity = std::min(validity, double(start) - double(worldTime));
+            continue;
+        }
+        const float weight = c.getWeight();
+        if (!(weight > 0.0f)) continue;
+
+        const KeyframeSequence& seq = *track.sequence;
+        if (track.revision != seq.getRevision()) {
+            track.view = preparedViewOf(seq);  // throws for a sequence that cannot be sampled
+            track.revision = seq.getRevision();
+        }
+        const SampleValidity sv =
+            sampleKeyframes(track.view, double(c.getPosition(worldTime)),
+                            std::span<float>(samples_.data() + track.sampleOffset, std::size_t(track.view.components)),
+                            &track.segment);
+        // Every term is >= 0: once it is 0 the minimum is settled.
+        if (validity > 0.0) {
+            validity = std::min(validity, worldValidity(sv, c.getSpeed()));
+            if (start != stop) validity = std::min(validity, double(stop) - double(worldTime));
+        }
+        track.weight = weight;
+    }
     for (const Target& target : targets_) {
         for (std::uint32_t p = target.firstProperty; p < target.endProperty; ++p) {
             const Property& property = properties_[p];
             const std::size_t components = std::size_t(property.components);
             float* const sum = sum_.data();
             bool contributed = false;
+            // The first contributing track's sample weighted (0 + w s is w
+            // s), later ones added weighted, in the object's track order.
             for (std::uint32_t t = property.firstTrack; t < property.endTrack; ++t) {
-                Track& track = tracks_[t];
-                const AnimationController& c = *track.controller;
-                const int start = c.getActiveIntervalStart(), stop = c.getActiveIntervalEnd();
-                if (!c.isActive(worldTime)) {
-                    if (worldTime < start) validity = std::min(validity, double(start) - double(worldTime));
-                    continue;
-                }
-                const float weight = c.getWeight();
+                const Track& track = tracks_[t];
+                const float weight = track.weight;
                 if (!(weight > 0.0f)) continue;
-
-                const KeyframeSequence& seq = *track.sequence;
-                if (track.revision != seq.getRevision()) {
-                    track.view = preparedViewOf(seq);  // throws for a sequence that cannot be sampled
-                    track.revision = seq.getRevision();
-                }
-                // The first contributing track samples straight into the
-                // sum (0 + w s is w s), later ones are added weighted.
-                float* const out = contributed ? sample_.data() : sum;
-                const SampleValidity sv = sampleKeyframes(track.view, double(c.getPosition(worldTime)),
-                                                          std::span<float>(out, components), &track.segment);
-                // Every term is >= 0: once it is 0 the minimum is settled.
-                if (validity > 0.0) {
-                    validity = std::min(validity, worldValidity(sv, c.getSpeed()));
-                    if (start != stop) validity = std::min(validity, double(stop) - double(worldTime));
-                }
+                const float* sample = samples_.data() + track.sampleOffset;
                 if (!contributed) {
                     if (weight != 1.0f)
-                        for (std::size_t k = 0; k < components; ++k) sum[k] *= weight;
+                        for (std::size_t k = 0; k < components; ++k) sum[k] = sample[k] * weight;
+                    else
+                        std::copy_n(sample, components, sum);
                     contributed = true;
                 } else {
-                    for (std::size_t k = 0; k < components; ++k) sum[k] += weight * sample_[k];
+                    for (std::size_t k = 0; k < components; ++k) sum[k] += weight * sample[k];
                 }
             }
             if (contributed) target.object->updateProperty(property.property, std::span<const float>(sum, components));

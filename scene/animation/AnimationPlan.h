@@ -91,13 +91,16 @@ private:
         // for the validation and cache checks. kNotPrepared: not yet.
         std::uint64_t revision;
         KeyframeView view;
+        std::uint32_t sampleOffset;  // its sample in samples_
+        float weight;                // apply()'s first pass: > 0 when it contributes this time
     };
     static constexpr std::uint64_t kNotPrepared = ~std::uint64_t{0};
 
     std::vector<Target> targets_;
     std::vector<Property> properties_;
     std::vector<Track> tracks_;
-    std::vector<float> sum_, sample_;  // the widest property's components
+    std::vector<float> sum_;      // the widest property's components
+    std::vector<float> samples_;  // every track's sample (its property's components)
     std::uint64_t generation_ = 0;     // 0: never built
 };
 
