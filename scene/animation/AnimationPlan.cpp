@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstring>
 #include <span>
 
 #include <m3g/AnimationController.h>
@@ -102,6 +103,30 @@ thread_local WalkScratch tlsWalk;
 
 const AnimationTrack& asTrack(const Ref<Object3D>& t) { return static_cast<const AnimationTrack&>(*t); }
 
+/// True when every sample of a prepared view is its first valid key's
+/// value, bit for bit: every key holds that value and every segment is flat
+/// (KeyframeView::flat: its samples copy its key, so SPLINE tangents and
+/// SQUAD controls add nothing); STEP copies keys anyway. Exported clips
+/// carry many such tracks (a bone's scale, a translation that never moves).
+bool constantValue(const KeyframeView& k) {
+    const std::size_t comps = std::size_t(k.components);
+    const auto first = std::size_t(k.first);
+    if (k.interpolation != KeyframeSequence::STEP) {
+        // One flag per valid key, the wrap segment included.
+        if (k.flat.empty()) return false;
+        for (const unsigned char f : k.flat)
+            if (!f) return false;
+        return true;
+    }
+    const int count = k.first <= k.last ? k.last - k.first + 1 : k.keyCount - k.first + k.last + 1;
+    const float* v0 = k.values.data() + first * comps;
+    for (int j = 1; j < count; ++j) {
+        const std::size_t i = (first + std::size_t(j)) % std::size_t(k.keyCount);
+        if (std::memcmp(v0, k.values.data() + i * comps, comps * sizeof(float)) != 0) return false;
+    }
+    return true;
+}
+
 // World milliseconds for which a sample stays valid, given how far it stays
 // valid in sequence time in each direction and the controller speed.
 double worldValidity(const SampleValidity& v, float speed) {
@@ -158,7 +183,8 @@ void AnimationPlan::build(Object3D& root) {
                 const KeyframeSequence* sequence = track.getKeyframeSequence().get();
                 components = sequence->getComponentCount();  // the same for every track on a property
                 if (const AnimationController* c = track.getController().get()) {
-                    tracks_.push_back({sequence, c, 0, kNotPrepared, {}, static_cast<std::uint32_t>(sampleFloats), 0.0f});
+                    tracks_.push_back(
+                        {sequence, c, 0, kNotPrepared, {}, false, static_cast<std::uint32_t>(sampleFloats), 0.0f});
                     sampleFloats += std::size_t(components);
                 }
             }
@@ -204,17 +230,25 @@ int AnimationPlan::apply(int worldTime) {
         if (track.revision != seq.getRevision()) {
             track.view = preparedViewOf(seq);  // throws for a sequence that cannot be sampled
             track.revision = seq.getRevision();
+            track.constant = constantValue(track.view);
+        }
+        track.weight = weight;
+        float* const sample = samples_.data() + track.sampleOffset;
+        // With the validity settled at 0, a constant track's sample is all
+        // there is to know: the value it would sample, copied.
+        if (track.constant && !(validity > 0.0)) {
+            std::copy_n(track.view.values.data() + std::size_t(track.view.first) * std::size_t(track.view.components),
+                        track.view.components, sample);
+            continue;
         }
         const SampleValidity sv =
             sampleKeyframes(track.view, double(c.getPosition(worldTime)),
-                            std::span<float>(samples_.data() + track.sampleOffset, std::size_t(track.view.components)),
-                            &track.segment);
+                            std::span<float>(sample, std::size_t(track.view.components)), &track.segment);
         // Every term is >= 0: once it is 0 the minimum is settled.
         if (validity > 0.0) {
             validity = std::min(validity, worldValidity(sv, c.getSpeed()));
             if (start != stop) validity = std::min(validity, double(stop) - double(worldTime));
         }
-        track.weight = weight;
     }
     for (const Target& target : targets_) {
         for (std::uint32_t p = target.firstProperty; p < target.endProperty; ++p) {

@@ -91,6 +91,9 @@ private:
         // for the validation and cache checks. kNotPrepared: not yet.
         std::uint64_t revision;
         KeyframeView view;
+        // The view samples to one value at every time (constantValue()
+        // says when): apply() copies it once the validity is settled at 0.
+        bool constant;
         std::uint32_t sampleOffset;  // its sample in samples_
         float weight;                // apply()'s first pass: > 0 when it contributes this time
     };

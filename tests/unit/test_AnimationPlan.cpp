@@ -460,3 +460,82 @@ TEST(AnimationPlan, SplineTangentsFollowEveryChangeByHand) {
     s->setRepeatMode(KeyframeSequence::CONSTANT);
     EXPECT_NEAR(xAt(15), 29.375f, 1e-5f);
 }
+
+// Tracks whose every sample is one value (all keys equal, every segment
+// flat) are copied rather than sampled once the validity is known to be 0,
+// and sampled as usual while it is not. Values and validities by hand: a
+// constant track gives its key at every time, before its first key (a
+// CONSTANT sequence) it still limits the validity to the time until that
+// key, and a key changed later makes it move again.
+TEST(AnimationPlan, ConstantTracksGiveTheirKeyAndKeepTheValidity) {
+    for (int interpolation : {KeyframeSequence::LINEAR, KeyframeSequence::SPLINE, KeyframeSequence::STEP}) {
+        Ref<AnimationController> controller = make<AnimationController>();
+        Ref<Group> root = make<Group>(), moving = make<Group>(), still = make<Group>(), later = make<Group>();
+        root->addChild(moving);
+        root->addChild(still);
+        root->addChild(later);
+        // `moving` first: an interpolated sample settles the validity at 0
+        // before `still` is reached (the walk's order).
+        attach(*moving, moves(), AnimationTrack::TRANSLATION, controller);
+        Ref<KeyframeSequence> constant = sequence(interpolation, {{2, 3, 4}, {2, 3, 4}, {2, 3, 4}});
+        attach(*still, constant, AnimationTrack::TRANSLATION, controller);
+        Ref<KeyframeSequence> scale = sequence(interpolation, {{0.5f, 0.5f, 0.5f}, {0.5f, 0.5f, 0.5f}});
+        attach(*later, scale, AnimationTrack::SCALE, controller);
+        for (int t = 0; t < 400; t += 23) {
+            EXPECT_EQ(root->animate(t), 0) << "interpolation " << interpolation << ", time " << t;
+            float p[3], s[3];
+            still->getTranslation(p);
+            later->getScale(s);
+            EXPECT_EQ(p[0], 2.0f);
+            EXPECT_EQ(p[1], 3.0f);
+            EXPECT_EQ(p[2], 4.0f);
+            EXPECT_EQ(s[0], 0.5f);
+            EXPECT_EQ(s[2], 0.5f);
+        }
+        // A changed key: the track is no longer constant. At time 150 (half
+        // way from key 1 at 100 to key 2 at 200) LINEAR gives the midpoint,
+        // STEP key 1, SPLINE its Hermite blend (checked against the midpoint
+        // only for being different from the old value).
+        const float key[] = {4, 3, 0};
+        constant->setKeyframe(2, 200, key);
+        root->animate(150);
+        float p[3];
+        still->getTranslation(p);
+        if (interpolation == KeyframeSequence::LINEAR) {
+            EXPECT_EQ(p[0], 3.0f);
+            EXPECT_EQ(p[2], 2.0f);
+        } else if (interpolation == KeyframeSequence::STEP) {
+            EXPECT_EQ(p[0], 2.0f);
+        } else {
+            EXPECT_NE(p[0], 2.0f);
+        }
+        EXPECT_EQ(p[1], 3.0f);
+    }
+    // Only constant tracks of CONSTANT sequences, at world time 0 before
+    // their first keys (times 100 and 50): the validity is the time to the
+    // nearer key, 50, so the second track must still have been sampled.
+    Ref<AnimationController> controller = make<AnimationController>();
+    Ref<Group> root = make<Group>(), a = make<Group>(), b = make<Group>();
+    root->addChild(a);
+    root->addChild(b);
+    auto delayed = [](int firstTime) {
+        Ref<KeyframeSequence> s = make<KeyframeSequence>(2, 3, KeyframeSequence::LINEAR);
+        const float v[] = {1, 1, 1};
+        s->setKeyframe(0, firstTime, v);
+        s->setKeyframe(1, firstTime + 100, v);
+        s->setDuration(400);
+        return s;
+    };
+    attach(*a, delayed(100), AnimationTrack::TRANSLATION, controller);
+    attach(*b, delayed(50), AnimationTrack::TRANSLATION, controller);
+    EXPECT_EQ(root->animate(0), 50);
+    EXPECT_EQ(root->animate(30), 20);
+    // Inside b's flat segment (50..150) its sample changes "continuously"
+    // as far as validity goes (sampleKeyframes says 0 inside a segment);
+    // after both last keys nothing changes any more.
+    EXPECT_EQ(root->animate(60), 0);
+    EXPECT_EQ(root->animate(250), 0x7FFFFFFF);
+    float p[3];
+    a->getTranslation(p);
+    EXPECT_EQ(p[0], 1.0f);
+}
