@@ -204,17 +204,19 @@ void AnimationPlan::build(Object3D& root) {
     s.lastReachable = s.seen.size();
     if (sum_.size() < widest) sum_.resize(widest);
     if (samples_.size() < sampleFloats) samples_.resize(sampleFloats);
+    squads_.reserve(tracks_.size());  // at most one deferred sample a track: apply() never allocates
     generation_ = generation;
 }
 
 int AnimationPlan::apply(int worldTime) {
-    // Two passes: every track is sampled first, then each property blended
-    // and applied. The samples of different tracks do not depend on one
+    // Two passes: every track is sampled first (SQUAD samples together at
+    // the end of it), then each property blended and applied. The samples of different tracks do not depend on one
     // another (no animatable property is read by sampling: controllers and
     // sequences have none), so with nothing between them the core overlaps
     // their arithmetic (a SQUAD sample is a long chain of dependent float
     // operations) instead of waiting for each, then for the setter.
     double validity = kForever;
+    squads_.clear();
     for (Track& track : tracks_) {
         track.weight = 0.0f;
         const AnimationController& c = *track.controller;
@@ -241,15 +243,17 @@ int AnimationPlan::apply(int worldTime) {
                         track.view.components, sample);
             continue;
         }
-        const SampleValidity sv =
-            sampleKeyframes(track.view, double(c.getPosition(worldTime)),
-                            std::span<float>(sample, std::size_t(track.view.components)), &track.segment);
+        const SampleValidity sv = sampleKeyframesDeferringSquad(
+            track.view, double(c.getPosition(worldTime)), std::span<float>(sample, std::size_t(track.view.components)),
+            &track.segment, squads_);
         // Every term is >= 0: once it is 0 the minimum is settled.
         if (validity > 0.0) {
             validity = std::min(validity, worldValidity(sv, c.getSpeed()));
             if (start != stop) validity = std::min(validity, double(stop) - double(worldTime));
         }
     }
+    // The SQUAD samples, interleaved (sampleSquads).
+    sampleSquads(squads_);
     for (const Target& target : targets_) {
         for (std::uint32_t p = target.firstProperty; p < target.endProperty; ++p) {
             const Property& property = properties_[p];

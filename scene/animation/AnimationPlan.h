@@ -104,6 +104,7 @@ private:
     std::vector<Track> tracks_;
     std::vector<float> sum_;      // the widest property's components
     std::vector<float> samples_;  // every track's sample (its property's components)
+    std::vector<SquadSample> squads_;  // apply()'s SQUAD samples, computed after the others
     std::uint64_t generation_ = 0;     // 0: never built
 };
 

@@ -396,7 +396,11 @@ void flatSegments(const KeyframeView& k, std::vector<unsigned char>& out) {
     }
 }
 
-SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<float> out, int* segment) {
+namespace {
+
+/// sampleKeyframes and sampleKeyframesDeferringSquad (`deferred` null: compute).
+SampleValidity sample(const KeyframeView& k, double time, std::span<float> out, int* segment,
+                      std::vector<SquadSample>* deferred) {
     const ValidKeys keys(k);
     const int n = keys.count();
     const int comps = k.components;
@@ -471,6 +475,11 @@ SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<flo
             break;
         }
         const float uf = float(u);
+        if (deferred) {
+            const float* arcs = k.arcs.data() + std::size_t(2 * j) * kArcFloats;
+            deferred->push_back({p0, arcs, k.squad.data() + std::size_t(j) * 8, arcs + kArcFloats, uf, out.data()});
+            break;
+        }
         const Quatf keyPoint = arcAt(quatfAt(p0), arcFrom(k.arcs, 2 * j), uf);
         const Quatf controlPoint = arcAt(squadControl(k, j, 0), arcFrom(k.arcs, 2 * j + 1), uf);
         writeQuat(slerp(keyPoint, controlPoint, 2.0f * uf * (1.0f - uf)), out);
@@ -480,6 +489,45 @@ SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<flo
         break;
     }
     return {0.0, 0.0};
+}
+
+}  // namespace
+
+SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<float> out, int* segment) {
+    return sample(k, time, out, segment, nullptr);
+}
+
+SampleValidity sampleKeyframesDeferringSquad(const KeyframeView& k, double time, std::span<float> out, int* segment,
+                                             std::vector<SquadSample>& deferred) {
+    return sample(k, time, out, segment, &deferred);
+}
+
+void sampleSquads(std::span<const SquadSample> samples) noexcept {
+    // The steps of sampleKeyframes' SQUAD case, each over a block of
+    // samples before the next: the same functions on the same values.
+    constexpr std::size_t kBlock = 8;
+    for (std::size_t first = 0; first < samples.size(); first += kBlock) {
+        const std::size_t n = std::min(kBlock, samples.size() - first);
+        const SquadSample* b = samples.data() + first;
+        Quatf keyPoint[kBlock], controlPoint[kBlock];
+        Arc arc[kBlock];
+        for (std::size_t i = 0; i < n; ++i) {
+            const SquadSample& q = b[i];
+            keyPoint[i] = arcAt(quatfAt(q.key), arcFrom(std::span<const float>(q.keyArc, kArcFloats), 0), q.u);
+            controlPoint[i] =
+                arcAt(quatfAt(q.control), arcFrom(std::span<const float>(q.controlArc, kArcFloats), 0), q.u);
+        }
+        for (std::size_t i = 0; i < n; ++i) arc[i] = arcOf(keyPoint[i], controlPoint[i]);
+        for (std::size_t i = 0; i < n; ++i) {
+            const float u = b[i].u;
+            const Quatf q = arcAt(keyPoint[i], arc[i], 2.0f * u * (1.0f - u));
+            float* out = b[i].out;
+            out[0] = q.x;
+            out[1] = q.y;
+            out[2] = q.z;
+            out[3] = q.w;
+        }
+    }
 }
 
 void sampleKeyframeSlope(const KeyframeView& k, double time, bool fromLeft, std::span<float> out) {

@@ -127,6 +127,32 @@ void flatSegments(const KeyframeView& k, std::vector<unsigned char>& out);
 /// changed) only costs the search, and the result is the same as without it.
 SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<float> out, int* segment = nullptr);
 
+/// A SQUAD sample inside a segment of a view with kept controls and arcs,
+/// not yet computed: its key, its control A_j, the two arcs (kArcFloats
+/// floats each), the fraction u and where the unit quaternion goes.
+struct SquadSample {
+    const float* key;
+    const float* keyArc;
+    const float* control;
+    const float* controlArc;
+    float u;
+    float* out;
+};
+
+/// As sampleKeyframes, except that a sample that would compute a SQUAD
+/// inside a segment from the view's kept controls and arcs is left to
+/// sampleSquads: its inputs are appended to `deferred` and `out` is not
+/// written. Same validity, same segment.
+SampleValidity sampleKeyframesDeferringSquad(const KeyframeView& k, double time, std::span<float> out, int* segment,
+                                             std::vector<SquadSample>& deferred);
+
+/// Computes deferred SQUAD samples, each bit for bit as sampleKeyframes
+/// would. Several at a time, step by step (the two inner SLERPs of each,
+/// then each outer arc, then each point on it): a sample is one long chain
+/// of dependent float operations (square roots, divisions, polynomials),
+/// and interleaving the chains of different tracks lets them overlap.
+void sampleSquads(std::span<const SquadSample> samples) noexcept;
+
 /// The derivative of the sampled value with respect to sequence time at
 /// `time` (k.components floats into `out`) for a valid SPLINE or LINEAR
 /// view: from the segment that ends at `time` when `fromLeft`, else from the

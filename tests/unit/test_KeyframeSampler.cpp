@@ -569,3 +569,77 @@ TEST(KeyframeSampler, FlatSegmentsHoldTheKeyAndSampleTheSame) {
     EXPECT_EQ(s->flatSegments()[0], 0);
     EXPECT_EQ(s->flatSegments()[1], 1);
 }
+
+// animate() leaves the SQUAD samples inside segments to sampleSquads, which
+// computes several at a time: each must be what sampleKeyframes gives (bit
+// for bit where the compiler cannot fuse multiply-adds differently in the
+// two places), with the same validity and segment, and nothing else may be
+// deferred. Keys: random unit quaternions, plus repeated, nearly equal and
+// opposite neighbours (the arcs' Linear and Renormalise cases); LOOP and
+// CONSTANT; more samples than one block, in an odd number.
+TEST(KeyframeSampler, DeferredSquadSamplesEqualDirectOnes) {
+    std::uint32_t state = 12345;
+    auto next = [&] {
+        state = state * 1664525u + 1013904223u;
+        return float(state >> 8) / float(1u << 24) * 2.0f - 1.0f;
+    };
+    auto unit = [&] {
+        std::vector<float> q = {next(), next(), next(), next()};
+        const float n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+        for (float& c : q) c /= n;
+        return q;
+    };
+    for (int repeat : {KeyframeSequence::LOOP, KeyframeSequence::CONSTANT}) {
+        for (int trial = 0; trial < 6; ++trial) {
+            std::vector<Key> keys;
+            for (int j = 0; j < 7; ++j) keys.push_back({j * 13 + (j > 3 ? 5 : 0), unit()});
+            if (trial % 3 == 1) keys[2].value = keys[1].value;  // a held key
+            if (trial % 3 == 2) {
+                keys[3].value = keys[2].value;
+                keys[3].value[0] += 1e-6f;  // nearly equal
+                keys[5].value = keys[4].value;
+                for (float& c : keys[5].value) c = -c;  // opposite
+            }
+            auto s = makeSeq(KeyframeSequence::SQUAD, repeat, 100, keys);
+            const detail::KeyframeView kept = detail::preparedViewOf(*s);
+            std::vector<double> times;
+            for (double t = -15.0; t <= 230.0; t += 1.3) times.push_back(t);
+            std::vector<float> direct(times.size() * 4), later(times.size() * 4, -7.0f);
+            std::vector<detail::SquadSample> deferred;
+            std::size_t interior = 0;
+            for (std::size_t i = 0; i < times.size(); ++i) {
+                int segA = 0, segB = 0;
+                const auto a = detail::sampleKeyframes(kept, times[i], std::span(direct.data() + 4 * i, 4), &segA);
+                const std::size_t before = deferred.size();
+                const auto b = detail::sampleKeyframesDeferringSquad(kept, times[i], std::span(later.data() + 4 * i, 4),
+                                                                      &segB, deferred);
+                EXPECT_EQ(a.forward, b.forward);
+                EXPECT_EQ(a.backward, b.backward);
+                EXPECT_EQ(segA, segB);
+                if (deferred.size() > before) {
+                    ++interior;
+                    EXPECT_EQ(later[4 * i], -7.0f) << "a deferred sample was written at once";
+                }
+            }
+            ASSERT_GT(deferred.size(), 9u);
+            EXPECT_EQ(deferred.size(), interior);
+            detail::sampleSquads(deferred);
+            for (std::size_t i = 0; i < times.size(); ++i)
+                for (int c = 0; c < 4; ++c) {
+#ifdef __FP_FAST_FMAF
+                    EXPECT_NEAR(later[4 * i + c], direct[4 * i + c], 1e-6f) << "time " << times[i];
+#else
+                    EXPECT_EQ(later[4 * i + c], direct[4 * i + c]) << "time " << times[i] << ", component " << c;
+#endif
+                }
+        }
+    }
+    // Other interpolations defer nothing.
+    auto lin = makeSeq(KeyframeSequence::SLERP, KeyframeSequence::LOOP, 70, {{0, zQuat(10)}, {30, zQuat(50)}});
+    const detail::KeyframeView view = detail::preparedViewOf(*lin);
+    std::vector<detail::SquadSample> deferred;
+    float out[4] = {};
+    detail::sampleKeyframesDeferringSquad(view, 12.0, out, nullptr, deferred);
+    EXPECT_TRUE(deferred.empty());
+    EXPECT_NE(out[3], 0.0f);
+}
