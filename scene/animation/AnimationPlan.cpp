@@ -210,11 +210,12 @@ void AnimationPlan::build(Object3D& root) {
 
 int AnimationPlan::apply(int worldTime) {
     // Two passes: every track is sampled first (SQUAD samples together at
-    // the end of it), then each property blended and applied. The samples of different tracks do not depend on one
-    // another (no animatable property is read by sampling: controllers and
-    // sequences have none), so with nothing between them the core overlaps
-    // their arithmetic (a SQUAD sample is a long chain of dependent float
-    // operations) instead of waiting for each, then for the setter.
+    // the end of it), then each property blended and applied. The samples
+    // of different tracks do not depend on one another (no animatable
+    // property is read by sampling: controllers and sequences have none),
+    // so with nothing between them the core overlaps their arithmetic (a
+    // SQUAD sample is a long chain of dependent float operations) instead of
+    // waiting for each, then for the setter.
     double validity = kForever;
     squads_.clear();
     for (Track& track : tracks_) {
