@@ -20,7 +20,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <cstring>
 #include <span>
 
 #include <m3g/AnimationController.h>
@@ -103,30 +102,6 @@ thread_local WalkScratch tlsWalk;
 
 const AnimationTrack& asTrack(const Ref<Object3D>& t) { return static_cast<const AnimationTrack&>(*t); }
 
-/// True when every sample of a prepared view is its first valid key's
-/// value, bit for bit: every key holds that value and every segment is flat
-/// (KeyframeView::flat: its samples copy its key, so SPLINE tangents and
-/// SQUAD controls add nothing); STEP copies keys anyway. Exported clips
-/// carry many such tracks (a bone's scale, a translation that never moves).
-bool constantValue(const KeyframeView& k) {
-    const std::size_t comps = std::size_t(k.components);
-    const auto first = std::size_t(k.first);
-    if (k.interpolation != KeyframeSequence::STEP) {
-        // One flag per valid key, the wrap segment included.
-        if (k.flat.empty()) return false;
-        for (const unsigned char f : k.flat)
-            if (!f) return false;
-        return true;
-    }
-    const int count = k.first <= k.last ? k.last - k.first + 1 : k.keyCount - k.first + k.last + 1;
-    const float* v0 = k.values.data() + first * comps;
-    for (int j = 1; j < count; ++j) {
-        const std::size_t i = (first + std::size_t(j)) % std::size_t(k.keyCount);
-        if (std::memcmp(v0, k.values.data() + i * comps, comps * sizeof(float)) != 0) return false;
-    }
-    return true;
-}
-
 // World milliseconds for which a sample stays valid, given how far it stays
 // valid in sequence time in each direction and the controller speed.
 double worldValidity(const SampleValidity& v, float speed) {
@@ -184,7 +159,7 @@ void AnimationPlan::build(Object3D& root) {
                 components = sequence->getComponentCount();  // the same for every track on a property
                 if (const AnimationController* c = track.getController().get()) {
                     tracks_.push_back(
-                        {sequence, c, 0, kNotPrepared, {}, false, static_cast<std::uint32_t>(sampleFloats), 0.0f});
+                        {sequence, c, 0, kNotPrepared, {}, nullptr, static_cast<std::uint32_t>(sampleFloats), 0.0f});
                     sampleFloats += std::size_t(components);
                 }
             }
@@ -240,8 +215,7 @@ int AnimationPlan::apply(int worldTime) {
         // With the validity settled at 0, a constant track's sample is all
         // there is to know: the value it would sample, copied.
         if (track.constant && !(validity > 0.0)) {
-            std::copy_n(track.view.values.data() + std::size_t(track.view.first) * std::size_t(track.view.components),
-                        track.view.components, sample);
+            std::copy_n(track.constant, track.view.components, sample);
             continue;
         }
         const SampleValidity sv = sampleKeyframesDeferringSquad(

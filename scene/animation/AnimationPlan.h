@@ -91,9 +91,9 @@ private:
         // for the validation and cache checks. kNotPrepared: not yet.
         std::uint64_t revision;
         KeyframeView view;
-        // The view samples to one value at every time (constantValue()
-        // says when): apply() copies it once the validity is settled at 0.
-        bool constant;
+        // The one value the view samples to at every time (constantValue),
+        // else null: apply() copies it once the validity is settled at 0.
+        const float* constant;
         std::uint32_t sampleOffset;  // its sample in samples_
         float weight;                // apply()'s first pass: > 0 when it contributes this time
     };

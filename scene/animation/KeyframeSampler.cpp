@@ -474,15 +474,13 @@ SampleValidity sample(const KeyframeView& k, double time, std::span<float> out, 
             squadPerSample(k, keys, j, u, out);
             break;
         }
-        const float uf = float(u);
-        if (deferred) {
-            const float* arcs = k.arcs.data() + std::size_t(2 * j) * kArcFloats;
-            deferred->push_back({p0, arcs, k.squad.data() + std::size_t(j) * 8, arcs + kArcFloats, uf, out.data()});
-            break;
-        }
-        const Quatf keyPoint = arcAt(quatfAt(p0), arcFrom(k.arcs, 2 * j), uf);
-        const Quatf controlPoint = arcAt(squadControl(k, j, 0), arcFrom(k.arcs, 2 * j + 1), uf);
-        writeQuat(slerp(keyPoint, controlPoint, 2.0f * uf * (1.0f - uf)), out);
+        // One formula for both: sampleSquads, now or later.
+        const float* arcs = k.arcs.data() + std::size_t(2 * j) * kArcFloats;
+        const SquadSample q{p0, arcs, k.squad.data() + std::size_t(j) * 8, arcs + kArcFloats, float(u), out.data()};
+        if (deferred)
+            deferred->push_back(q);
+        else
+            sampleSquads(std::span(&q, 1));
         break;
     }
     default:
@@ -495,6 +493,22 @@ SampleValidity sample(const KeyframeView& k, double time, std::span<float> out, 
 
 SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<float> out, int* segment) {
     return sample(k, time, out, segment, nullptr);
+}
+
+const float* constantValue(const KeyframeView& k) {
+    const ValidKeys keys(k);
+    if (k.interpolation != KeyframeSequence::STEP) {
+        // One flag per valid key, the wrap segment included: all flat means
+        // every key equal and every segment a copy of its key.
+        if (k.flat.empty()) return nullptr;
+        for (const unsigned char f : k.flat)
+            if (!f) return nullptr;
+        return keys.value(0);
+    }
+    const auto bytes = std::size_t(k.components) * sizeof(float);
+    for (int j = 1; j < keys.count(); ++j)
+        if (std::memcmp(keys.value(0), keys.value(j), bytes) != 0) return nullptr;
+    return keys.value(0);
 }
 
 SampleValidity sampleKeyframesDeferringSquad(const KeyframeView& k, double time, std::span<float> out, int* segment,

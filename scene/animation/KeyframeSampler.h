@@ -127,6 +127,14 @@ void flatSegments(const KeyframeView& k, std::vector<unsigned char>& out);
 /// changed) only costs the search, and the result is the same as without it.
 SampleValidity sampleKeyframes(const KeyframeView& k, double time, std::span<float> out, int* segment = nullptr);
 
+/// The one value every sample of a prepared view gives, or null: non-null
+/// when every valid key holds the same bits and every segment is flat
+/// (KeyframeView::flat: its samples copy its key, so SPLINE tangents and
+/// SQUAD controls add nothing); for STEP when every valid key is the same.
+/// Exported clips carry many such tracks (a bone's scale, a translation
+/// that never moves). Points into the view's values.
+const float* constantValue(const KeyframeView& k);
+
 /// A SQUAD sample inside a segment of a view with kept controls and arcs,
 /// not yet computed: its key, its control A_j, the two arcs (kArcFloats
 /// floats each), the fraction u and where the unit quaternion goes.
@@ -146,8 +154,8 @@ struct SquadSample {
 SampleValidity sampleKeyframesDeferringSquad(const KeyframeView& k, double time, std::span<float> out, int* segment,
                                              std::vector<SquadSample>& deferred);
 
-/// Computes deferred SQUAD samples, each bit for bit as sampleKeyframes
-/// would. Several at a time, step by step (the two inner SLERPs of each,
+/// Computes SQUAD samples (sampleKeyframes' own go through here too, one
+/// at a time, so deferred ones are the same bits). Several at a time, step by step (the two inner SLERPs of each,
 /// then each outer arc, then each point on it): a sample is one long chain
 /// of dependent float operations (square roots, divisions, polynomials),
 /// and interleaving the chains of different tracks lets them overlap.

@@ -133,10 +133,15 @@ void MeshDeformer::addSource(const VertexArray* array) {
     newSources_.push_back(array ? Source{array->getObjectId(), array->getRevision()} : Source{});
 }
 
-bool MeshDeformer::sourcesChanged(Kind kind, const Mesh& mesh) {
-    const bool changed = kind != kind_ || mesh.getObjectId() != meshId_ || newSources_ != sources_;
+bool MeshDeformer::meshChanged(Kind kind, const Mesh& mesh) {
+    const bool changed = kind != kind_ || mesh.getObjectId() != meshId_;
     kind_ = kind;
     meshId_ = mesh.getObjectId();
+    return changed;
+}
+
+bool MeshDeformer::sourcesChanged(Kind kind, const Mesh& mesh) {
+    const bool changed = meshChanged(kind, mesh) || newSources_ != sources_;
     sources_.swap(newSources_);
     return changed;
 }
@@ -181,12 +186,10 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
     // the MorphingMesh's variable one).
     auto source = [](const Object3D* o) { return o ? Source{o->getObjectId(), o->getRevision()} : Source{}; };
     const SkinnedSources now{source(&vb), source(vb.positions()), source(vb.normals())};
-    const bool inputsChanged =
-        kind_ != Kind::Skinned || mesh.getObjectId() != meshId_ || now != skinnedSources_ || !valid_;
-    kind_ = Kind::Skinned;
-    meshId_ = mesh.getObjectId();
+    // (Another kind of mesh since, and back: meshChanged says so, whatever
+    // skinnedSources_ and sources_ still hold.)
+    const bool inputsChanged = meshChanged(Kind::Skinned, mesh) || now != skinnedSources_ || !valid_;
     skinnedSources_ = now;
-    sources_.clear();
     const auto n = static_cast<std::size_t>(vb.getVertexCount());
     if (inputsChanged) {
         valid_ = false;

@@ -124,8 +124,11 @@ private:
     /// Lists groups_ from partition_ (after a change of the table or inputs).
     void planGroups();
     bool updateMorphing(const MorphingMesh& mesh);
-    /// Records `mesh`'s kind and id and whether `sources` equal the stored
-    /// ones (then swaps them in). True when anything differs.
+    /// Records `mesh`'s kind and id; true when either differs from the last
+    /// call's.
+    bool meshChanged(Kind kind, const Mesh& mesh);
+    /// meshChanged, and whether newSources_ equal the stored sources_ (then
+    /// swaps them in). True when anything differs.
     bool sourcesChanged(Kind kind, const Mesh& mesh);
     void addSource(const VertexBuffer* vb);
     void addSource(const VertexArray* array);
@@ -142,7 +145,7 @@ private:
     bool valid_ = false;
     std::vector<Source> sources_;      // VertexBuffers and VertexArrays, fixed order
     std::vector<Source> newSources_;   // scratch of update()
-    SkinnedSources skinnedSources_{};  // SkinnedMesh: what sources_ holds for a MorphingMesh
+    SkinnedSources skinnedSources_{};  // SkinnedMesh: its sources (sources_ is the MorphingMesh's)
 
     // ---- SkinnedMesh: inputs as floats (rebuilt when a source changes) ----
     std::vector<float> rawPositions_;  // unscaled; scale and bias go to the kernel
