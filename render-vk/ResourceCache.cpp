@@ -169,8 +169,8 @@ const VertexMirror& ResourceCache::vertices(const frame::VertexRef& ref, frame::
 }
 
 const IndexMirror& ResourceCache::indices(const frame::IndexRef& ref, frame::FrameSources& sources) {
-    IndexEntry& e = indices_[ref.id];
-    if (e.mirror.buffer.buffer && e.revision == ref.revision) return e.mirror;
+    IndexEntry& e = indices_[{ref.id, ref.vertexOrder}];
+    if (e.mirror.buffer.buffer && e.revision == ref.revision && e.orderVersion == ref.orderVersion) return e.mirror;
     sources.triangles(ref, triangles_);
     const VkDeviceSize size = std::max<VkDeviceSize>(triangles_.size() * sizeof(std::uint32_t), 16);
     retire(e.mirror.buffer);
@@ -179,6 +179,7 @@ const IndexMirror& ResourceCache::indices(const frame::IndexRef& ref, frame::Fra
         std::memcpy(e.mirror.buffer.mapped, triangles_.data(), triangles_.size() * sizeof(std::uint32_t));
     e.mirror.count = static_cast<std::uint32_t>(triangles_.size());
     e.revision = ref.revision;
+    e.orderVersion = ref.orderVersion;
     ++ctx_.bufferUploads;
     return e.mirror;
 }
@@ -327,13 +328,23 @@ void ResourceCache::release(std::span<const std::uint64_t> ids) {
             if (compute_) compute_->release(it->second.gpu);
             vertices_.erase(it);
         }
-        if (auto it = indices_.find(id); it != indices_.end()) {
-            retire(it->second.mirror.buffer);
-            indices_.erase(it);
-        }
         if (auto it = textures_.find(id); it != textures_.end()) {
             retire(it->second.image);
             textures_.erase(it);
+        }
+    }
+    // Index copies go with their IndexBuffer and with the mesh whose vertex
+    // order they follow: one pass over them.
+    if (ids.empty() || indices_.empty()) return;
+    std::vector<std::uint64_t> released(ids.begin(), ids.end());
+    std::sort(released.begin(), released.end());
+    auto gone = [&](std::uint64_t id) { return id && std::binary_search(released.begin(), released.end(), id); };
+    for (auto it = indices_.begin(); it != indices_.end();) {
+        if (gone(it->first.first) || gone(it->first.second)) {
+            retire(it->second.mirror.buffer);
+            it = indices_.erase(it);
+        } else {
+            ++it;
         }
     }
 }

@@ -11,10 +11,12 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <span>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include <m3g/frame/DrawList.h>
@@ -85,7 +87,16 @@ private:
     };
     struct IndexEntry {
         std::uint32_t revision = 0;
+        std::uint64_t orderVersion = 0;
         IndexMirror mirror;
+    };
+    /// An IndexBuffer's triangles, in its VertexBuffer's order (second 0)
+    /// or remapped to a deformed mesh's vertex order (second: that mesh).
+    using IndexKey = std::pair<std::uint64_t, std::uint64_t>;
+    struct IndexKeyHash {
+        std::size_t operator()(const IndexKey& k) const noexcept {
+            return std::hash<std::uint64_t>{}(k.first ^ (k.second * 0x9E3779B97F4A7C15ull));
+        }
     };
     struct TextureEntry {
         std::uint32_t revision = 0;
@@ -113,7 +124,7 @@ private:
     VkDescriptorSetLayout setLayout_;
     std::uint64_t frame_ = 1;
     std::unordered_map<std::uint64_t, VertexEntry> vertices_;
-    std::unordered_map<std::uint64_t, IndexEntry> indices_;
+    std::unordered_map<IndexKey, IndexEntry, IndexKeyHash> indices_;
     std::unordered_map<std::uint64_t, TextureEntry> textures_;
     std::unordered_map<std::uint32_t, VkSampler> samplers_;
     std::map<std::array<std::uint64_t, 4>, VkDescriptorSet> sets_;

@@ -125,6 +125,15 @@ std::span<const skin::InfluenceRun> movedRuns(std::span<const skin::InfluenceRun
 
 }  // namespace
 
+std::vector<float> DeformedVertices::inMeshOrder(std::span<const float> values, int components) const {
+    if (order.empty()) return {values.begin(), values.end()};
+    const auto c = static_cast<std::size_t>(components);
+    std::vector<float> out(values.size());
+    for (std::size_t i = 0; i < order.size() && (i + 1) * c <= values.size(); ++i)
+        std::copy_n(values.data() + i * c, c, out.data() + std::size_t{order[i]} * c);
+    return out;
+}
+
 void MeshDeformer::addSource(const VertexBuffer* vb) {
     newSources_.push_back(vb ? Source{vb->getObjectId(), vb->getRevision()} : Source{});
 }
@@ -211,34 +220,17 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
     const bool tableChanged = inputsChanged || table.revision() != tableRevision_;
     if (tableChanged) {
         valid_ = false;
-        // Short runs of the mesh's order go to the compact space (kMinInPlaceRun).
+        // Every vertex with influences goes to the compact space, sorted by
+        // influence set: the outputs stay in that order (order_).
         partition_.build(table.bones(), table.weights(), table.maxInfluences(), n,
-                         skin::InfluencePartition::kMinInPlaceRun);
+                         skin::InfluencePartition::kNoInPlaceRuns);
         tableRevision_ = table.revision();
         ++inputStamp_;
-    }
-    if (tableChanged || inputsChanged) {
-        // The compact space holds every loose vertex with influences when
-        // the partition could build it (a table with weights).
-        const auto order = partition_.compactOrder();
-        std::size_t loose = 0;
-        for (int c = 1; c <= partition_.maxInfluences(); ++c) loose += partition_.loose(c).size();
-        compact_ = !order.empty() && order.size() == loose;
-        const bool normals = !baseNormals_.empty();
-        compactPositions_.resize(compact_ ? order.size() * 3 : 0);
-        compactNormals_.resize(compact_ && normals ? order.size() * 3 : 0);
-        compactOutPositions_.resize(compactPositions_.size());
-        compactOutNormals_.resize(compactNormals_.size());
-        if (compact_)
-            for (std::size_t i = 0; i < order.size(); ++i) {
-                const std::size_t v = order[i];
-                std::copy_n(rawPositions_.data() + v * 3, 3, compactPositions_.data() + i * 3);
-                if (normals) std::copy_n(baseNormals_.data() + v * 3, 3, compactNormals_.data() + i * 3);
-            }
+        planOrder(n);
         planGroups();
     }
 
-    // The palette, once per bone: (bone -> mesh now) x (at rest). The
+    // The palette, once per bone    // The palette, once per bone: (bone -> mesh now) x (at rest). The
     // at-rest matrices are captured by addTransform, which also changes the
     // table: copied only then. No node on the bones' paths changed: the
     // palette, and so the vertices, are the last call's.
@@ -308,63 +300,79 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
     // A partial frame (out_ valid for these inputs, some entries changed):
     // vertices without bones keep their outputs, runs whose bones did not
     // move keep theirs; loose vertices are all skinned again (their blocks
-    // mix bones).
+    // mix bones). Every job works in the output order: the compact space's
+    // influenced vertices, then those without bones.
     const int stride = table.maxInfluences();
-    bool compactRan = false;
+    const std::span<const float> inPositions = ordered_ ? std::span<const float>(orderedPositions_) : rawPositions_;
+    const std::span<const float> inNormals = ordered_ ? std::span<const float>(orderedNormals_) : baseNormals_;
     for (const GroupPlan& g : groups_) {
         const int c = g.count;
         if (c == 0 && kept) continue;
         skin::SkinningJob job;
         job.vertices = g.vertices;
-        job.runs = partial ? movedRuns(g.runs, table.bones(), stride, c, entryChanged_, movedRuns_) : g.runs;
+        job.runs = partial ? movedRuns(g.runs, partition_.compactBones(), stride, c, entryChanged_, movedRuns_)
+                           : g.runs;
+        // A bone run's vertices share its bones: it moved with them.
+        job.boneRuns = partial ? movedRuns(g.boneRuns, partition_.compactBones(), stride, c, entryChanged_,
+                                           movedBoneRuns_)
+                               : g.boneRuns;
+        if (job.vertices.empty() && job.runs.empty() && job.boneRuns.empty()) continue;
         job.vertexCount = n;
         job.influenceCount = c;
         job.influenceStride = stride;
-        job.boneIndices = table.bones();
-        job.boneWeights = table.weights();
+        job.boneIndices = partition_.compactBones();
+        job.boneWeights = partition_.compactWeights();
         job.palette = palette_;
         // Influenced vertices: the palette applies the scale and bias.
         if (c == 0) {
             job.positionScale = skinInputs_.positionScale;
             job.positionBias = skinInputs_.positionBias;
         }
-        job.inPositions = rawPositions_;
+        job.inPositions = inPositions;
         job.outPositions = out_.positions;
-        job.inNormals = baseNormals_;
+        job.inNormals = inNormals;
         job.outNormals = out_.normals;
-        if (!job.vertices.empty() || !job.runs.empty())
-            require(g.parallel ? job.runParallel(skin::ThreadPool::shared(), kGrain) : job.run(), "skinning job");
-        if (!g.compact) continue;
-        // The compact vertices with c influences (runs and loose ones) in the
-        // compact arrays, written back to their mesh vertices below.
-        job.vertices = g.compactVertices;
-        job.runs = partial ? movedRuns(g.compactRuns, partition_.compactBones(), stride, c, entryChanged_, movedRuns_)
-                           : g.compactRuns;
-        // A bone run's vertices share its bones: it moved with them.
-        job.boneRuns = partial ? movedRuns(g.compactBoneRuns, partition_.compactBones(), stride, c, entryChanged_,
-                                           movedBoneRuns_)
-                               : g.compactBoneRuns;
-        if (job.vertices.empty() && job.runs.empty() && job.boneRuns.empty()) continue;
-        job.vertexCount = partition_.compactOrder().size();
-        job.boneIndices = partition_.compactBones();
-        job.boneWeights = partition_.compactWeights();
-        job.inPositions = compactPositions_;
-        job.outPositions = compactOutPositions_;
-        job.inNormals = compactNormals_;
-        job.outNormals = compactOutNormals_;
         require(g.parallel ? job.runParallel(skin::ThreadPool::shared(), kGrain) : job.run(), "skinning job");
-        compactRan = true;
-    }
-    if (compact_ && compactRan && output_ == Output::Vertices) {
-        const auto order = partition_.compactOrder();
-        if (compactOutNormals_.empty())
-            skin::scatterXyz(order, compactOutPositions_.data(), out_.positions.data());
-        else
-            skin::scatterXyz(order, compactOutPositions_.data(), out_.positions.data(), compactOutNormals_.data(),
-                             out_.normals.data());
     }
     finish();
     return true;
+}
+
+void MeshDeformer::planOrder(std::size_t n) {
+    // The compact space covers the vertices with influences (the partition
+    // is built with weights and no run kept in place); those without bones
+    // follow in the mesh's order.
+    const auto compact = partition_.compactOrder();
+    const auto unboned = partition_.group(0);
+    require(compact.size() + unboned.size() == n, "compact space");
+    order_.assign(compact.begin(), compact.end());
+    order_.insert(order_.end(), unboned.begin(), unboned.end());
+    unboned_.resize(unboned.size());
+    for (std::size_t i = 0; i < unboned_.size(); ++i) unboned_[i] = static_cast<std::uint32_t>(compact.size() + i);
+    ordered_ = false;
+    for (std::size_t i = 0; i < n && !ordered_; ++i) ordered_ = order_[i] != i;
+    ++orderStamp_;
+    if (!ordered_) {
+        // Already the mesh's order (one influence set, as otokka_jump2's
+        // meshes): nothing to gather, nothing for consumers to remap.
+        order_.clear();
+        location_.clear();
+        orderedPositions_.clear();
+        orderedNormals_.clear();
+    } else {
+        location_.resize(n);
+        for (std::size_t i = 0; i < n; ++i) location_[order_[i]] = static_cast<std::uint32_t>(i);
+        const bool normals = !baseNormals_.empty();
+        orderedPositions_.resize(n * 3);
+        orderedNormals_.resize(normals ? n * 3 : 0);
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t v = order_[i];
+            std::copy_n(rawPositions_.data() + v * 3, 3, orderedPositions_.data() + i * 3);
+            if (normals) std::copy_n(baseNormals_.data() + v * 3, 3, orderedNormals_.data() + i * 3);
+        }
+    }
+    out_.order = order_;
+    out_.location = location_;
 }
 
 void MeshDeformer::planGroups() {
@@ -375,14 +383,13 @@ void MeshDeformer::planGroups() {
         GroupPlan& g = groups_.emplace_back();
         g.count = c;
         g.parallel = group.size() >= kParallelVertices;
-        // With the compact space, the loose vertices with influences go there.
-        if (c == 0 || !compact_) g.vertices = partition_.loose(c);
-        g.runs = partition_.runs(c);
-        g.compact = c > 0 && compact_ && !partition_.loose(c).empty();
-        if (!g.compact) continue;
-        g.compactVertices = partition_.compactLoose(c);
-        g.compactRuns = partition_.compactRuns(c);
-        g.compactBoneRuns = partition_.compactBoneRuns(c);
+        if (c == 0) {
+            g.vertices = unboned_;
+            continue;
+        }
+        g.vertices = partition_.compactLoose(c);
+        g.runs = partition_.compactRuns(c);
+        g.boneRuns = partition_.compactBoneRuns(c);
     }
 }
 
@@ -438,6 +445,8 @@ bool MeshDeformer::updateMorphing(const MorphingMesh& mesh) {
             }
         }
         out_.vertexCount = static_cast<int>(n);
+        out_.order = {};
+        out_.location = {};
         auto size = [&](int attribute, std::vector<float>& out) {
             const int comps = morph_[static_cast<std::size_t>(attribute)].components;
             if (comps == 0 || output_ == Output::InputsOnly)

@@ -28,6 +28,21 @@ namespace m3g::detail {
 
 struct DeformedVertices {
     int vertexCount = 0;
+    /// The order of every stream below: slot i holds mesh vertex order[i].
+    /// Empty: the mesh's order (a MorphingMesh always; a SkinnedMesh whose
+    /// vertices already come in the order below). A SkinnedMesh's vertices
+    /// are kept grouped by influence set, as the kernels skin them
+    /// (docs/skinning.md, "Compact space"), so that nothing is copied back
+    /// to the mesh's order each frame: a consumer draws them through
+    /// `location` (the renderer remaps its index copy once per order).
+    std::span<const std::uint32_t> order;
+    /// The inverse of `order`: mesh vertex v is at slot location[v] (empty: v).
+    std::span<const std::uint32_t> location;
+    /// The slot of mesh vertex `v`.
+    std::uint32_t slotOf(std::uint32_t v) const noexcept { return location.empty() ? v : location[v]; }
+    /// `values` (a stream of this struct, `components` floats per slot)
+    /// rearranged into the mesh's order.
+    std::vector<float> inMeshOrder(std::span<const float> values, int components) const;
     /// xyz per vertex in the mesh's local space, position scale and bias
     /// already applied (so a consumer uses scale 1, bias 0).
     std::vector<float> positions;
@@ -76,6 +91,10 @@ public:
 
     /// Increments each time update() returns true: a key for GPU mirrors.
     std::uint64_t stamp() const noexcept { return stamp_; }
+    /// Increments each time update() rebuilt vertices().order (the
+    /// influence table or the inputs changed): a key for copies made
+    /// through it, such as remapped indices.
+    std::uint64_t orderStamp() const noexcept { return orderStamp_; }
     /// Increments each time update() rebuilt the static inputs (vertex
     /// arrays, influence table, morph targets), as opposed to only the
     /// palette or the weights: a key for GPU copies of those inputs.
@@ -110,17 +129,19 @@ private:
     using SkinnedSources = std::array<Source, 3>;
     /// The skinning jobs of one influence count, as the partition gives them
     /// (listed once per change of the table or the inputs, not per frame).
+    /// Everything in output slots (the compact space's, then the vertices
+    /// without bones).
     struct GroupPlan {
         int count = 0;
         bool parallel = false;                            // large enough for the thread pool
-        std::span<const std::uint32_t> vertices;          // mesh-order list (no compact space)
-        std::span<const skin::InfluenceRun> runs;         // mesh-order runs
-        bool compact = false;                             // has compact vertices
-        std::span<const std::uint32_t> compactVertices;   // compact loose positions
-        std::span<const skin::InfluenceRun> compactRuns, compactBoneRuns;
+        std::span<const std::uint32_t> vertices;          // loose (count 0: every vertex without bones)
+        std::span<const skin::InfluenceRun> runs, boneRuns;
     };
 
     bool updateSkinned(const SkinnedMesh& mesh);
+    /// The output order (order_, location_) of a partition of `n`
+    /// vertices, and the inputs gathered into it.
+    void planOrder(std::size_t n);
     /// Lists groups_ from partition_ (after a change of the table or inputs).
     void planGroups();
     bool updateMorphing(const MorphingMesh& mesh);
@@ -137,6 +158,7 @@ private:
     DeformedVertices out_;
     std::uint64_t stamp_ = 0;
     std::uint64_t inputStamp_ = 0;
+    std::uint64_t orderStamp_ = 0;
     Output output_ = Output::Vertices;  // of the last update()
 
     // ---- Change detection: out_ is valid for exactly these inputs ----
@@ -153,12 +175,14 @@ private:
     std::uint32_t tableRevision_ = 0;
     SkinInputs skinInputs_;
     skin::InfluencePartition partition_;
-    // The partition's compact space (its loose vertices sorted by influence
-    // set): inputs gathered when the inputs or the table change, outputs
-    // written back to the mesh's vertices after each skinning.
-    std::vector<float> compactPositions_, compactNormals_;
-    std::vector<float> compactOutPositions_, compactOutNormals_;
-    bool compact_ = false;
+    // The output order: the partition's compact space (every vertex with
+    // influences, sorted by influence set), then the vertices without bones.
+    // Empty when that is the mesh's order; the inputs are then used as they
+    // are, else gathered into it when the inputs or the table change.
+    std::vector<std::uint32_t> order_, location_;
+    std::vector<std::uint32_t> unboned_;  // output slots of the vertices without bones
+    bool ordered_ = false;
+    std::vector<float> orderedPositions_, orderedNormals_;
     std::vector<GroupPlan> groups_;    // the non-empty groups, ascending count
     BoneTransforms boneTransforms_;
     std::vector<float> boneMatrices_;  // 16 per bone: bone -> mesh now

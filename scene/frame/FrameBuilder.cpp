@@ -184,6 +184,12 @@ void FrameBuilder::build(const RenderQueue& queue, const frame::ViewState& view,
                                                 " but the VertexBuffer has ", vb.getVertexCount(), " vertices"));
             entry(ib);
             draw.indices = {ib.getObjectId(), ib.getRevision()};
+            // CPU-deformed vertices in an order of their own: the triangles
+            // go through it (triangles()).
+            if (e.source == VertexSource::Deformed && !e.deformer->vertices().order.empty()) {
+                draw.indices.vertexOrder = draw.vertices.owner;
+                draw.indices.orderVersion = e.deformer->orderStamp();
+            }
             translateSubmesh(queue, item, e.layout, projection, options, units, u, draw);
             for (int unit = 0; unit < 2; ++unit)
                 if (draw.textures[static_cast<std::size_t>(unit)].id)
@@ -246,15 +252,52 @@ frame::VertexStreams FrameBuilder::vertexStreams(const frame::VertexRef& ref) {
     if (ref.source == VertexSource::GpuMorphed) return s;
     // The VertexBuffer's own colours and texture coordinates where the
     // deformation left them alone.
-    if (s.streams[frame::COLORS].empty() && vb->colors()) {
-        colorStream(vb->colors(), scratch_[frame::COLORS]);
-        put(frame::COLORS);
+    auto fill = [&](int stream, std::vector<float>& out) {
+        if (stream == frame::COLORS)
+            colorStream(vb->colors(), out);
+        else
+            rawStream(vb->texCoords(stream - frame::TEXCOORDS0), 3, out);
+    };
+    auto needed = [&](int stream) {
+        const VertexArray* a = stream == frame::COLORS ? vb->colors() : vb->texCoords(stream - frame::TEXCOORDS0);
+        return a && s.streams[static_cast<std::size_t>(stream)].empty();
+    };
+    if (ref.source != VertexSource::Deformed || !it->second.deformer) {
+        for (int stream = frame::COLORS; stream < frame::STREAM_COUNT; ++stream)
+            if (needed(stream)) {
+                fill(stream, scratch_[static_cast<std::size_t>(stream)]);
+                put(stream);
+            }
+        return s;
     }
-    for (int u = 0; u < 2; ++u)
-        if (s.streams[static_cast<std::size_t>(frame::TEXCOORDS0 + u)].empty() && vb->texCoords(u)) {
-            rawStream(vb->texCoords(u), 3, scratch_[static_cast<std::size_t>(frame::TEXCOORDS0 + u)]);
-            put(frame::TEXCOORDS0 + u);
+    // A deformed mesh is read again at every pose; these do not change with
+    // it, so they are converted, and put in the deformed vertices' order
+    // (DeformedVertices::order), once per change of the arrays or the order.
+    Entry& e = it->second;
+    Statics& st = e.statics;
+    const std::uint64_t orderStamp = e.deformer->orderStamp();
+    if (!st.valid || st.signature != e.signature || st.order != orderStamp) {
+        const std::span<const std::uint32_t> order = e.deformer->vertices().order;
+        for (int stream = frame::COLORS; stream < frame::STREAM_COUNT; ++stream) {
+            auto& values = st.streams[static_cast<std::size_t>(stream - frame::COLORS)];
+            values.clear();
+            if (!needed(stream)) continue;
+            fill(stream, values);
+            if (order.empty()) continue;
+            const auto c = static_cast<std::size_t>(frame::kStreamComponents[static_cast<std::size_t>(stream)]);
+            reordered_.resize(values.size());
+            for (std::size_t i = 0; i < order.size() && (std::size_t{order[i]} + 1) * c <= values.size(); ++i)
+                std::copy_n(values.data() + std::size_t{order[i]} * c, c, reordered_.data() + i * c);
+            values.swap(reordered_);
         }
+        st.valid = true;
+        st.signature = e.signature;
+        st.order = orderStamp;
+    }
+    for (int stream = frame::COLORS; stream < frame::STREAM_COUNT; ++stream) {
+        const auto& values = st.streams[static_cast<std::size_t>(stream - frame::COLORS)];
+        if (needed(stream) && !values.empty()) s.streams[static_cast<std::size_t>(stream)] = values;
+    }
     return s;
 }
 
@@ -278,6 +321,13 @@ frame::MorphInputs FrameBuilder::morphInputs(const frame::VertexRef& ref) {
 void FrameBuilder::triangles(const frame::IndexRef& ref, std::vector<std::uint32_t>& out) {
     out.clear();
     if (const auto* ib = dynamic_cast<const IndexBuffer*>(object(ref.id))) triangleList(*ib, out);
+    if (!ref.vertexOrder) return;
+    const auto it = entries_.find(ref.vertexOrder);
+    if (it == entries_.end() || !it->second.deformer) return;
+    // build() checked every index against the vertex count.
+    const std::span<const std::uint32_t> location = it->second.deformer->vertices().location;
+    if (location.empty()) return;
+    for (std::uint32_t& i : out) i = i < location.size() ? location[i] : i;
 }
 
 void FrameBuilder::texels(const frame::TextureRef& ref, std::vector<std::uint8_t>& rgba, int& width, int& height) {

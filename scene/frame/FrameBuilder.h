@@ -56,6 +56,14 @@ public:
 
 private:
     using Signature = std::array<std::uint64_t, 12>;
+    /// A deformed mesh's colour and texture-coordinate streams from its
+    /// VertexBuffer, in the deformed order, for these arrays and this order.
+    struct Statics {
+        bool valid = false;
+        Signature signature{};
+        std::uint64_t order = 0;
+        std::array<std::vector<float>, frame::STREAM_COUNT - frame::COLORS> streams;
+    };
     struct Entry {
         WeakRef<Object3D> owner;
         // Vertex data (a VertexBuffer, or a deforming Mesh):
@@ -65,6 +73,7 @@ private:
         std::uint64_t call = 0;  ///< the build() that last refreshed it
         frame::VertexSource source = frame::VertexSource::Plain;
         VertexLayout layout;
+        Statics statics;
     };
     /// The entry of `object`, made on first use. Consecutive draws mostly
     /// share their vertex and index data, so the last two entries found are
@@ -79,6 +88,7 @@ private:
     std::uint64_t call_ = 0;
     std::vector<std::uint64_t> released_;
     std::array<std::vector<float>, frame::STREAM_COUNT> scratch_;
+    std::vector<float> reordered_;  // vertexStreams' scratch
 };
 
 }  // namespace m3g::detail

@@ -1,5 +1,7 @@
 #include "NullBackend.h"
 
+#include <algorithm>
+
 namespace m3g::detail {
 
 void NullBackend::refresh(const frame::Draw& draw, frame::FrameSources& sources) {
@@ -29,10 +31,12 @@ void NullBackend::refresh(const frame::Draw& draw, frame::FrameSources& sources)
         if (v.source == frame::VertexSource::GpuSkinned) uploads_.skinVertices += sources.skinInputs(v).vertexCount;
         if (v.source == frame::VertexSource::GpuMorphed) uploads_.morphVertices += sources.morphInputs(v).vertexCount;
     }
-    auto [iit, ifresh] = versions_.try_emplace(draw.indices.id, draw.indices.revision);
-    if (ifresh || iit->second != draw.indices.revision) {
-        iit->second = draw.indices.revision;
-        sources.triangles(draw.indices, triangles_[draw.indices.id]);
+    const IndexKey key{draw.indices.id, draw.indices.vertexOrder};
+    const std::pair<std::uint32_t, std::uint64_t> version{draw.indices.revision, draw.indices.orderVersion};
+    auto [iit, ifresh] = indexVersions_.try_emplace(key, version);
+    if (ifresh || iit->second != version) {
+        iit->second = version;
+        sources.triangles(draw.indices, triangles_[key]);
         ++uploads_.indices;
     }
 }
@@ -58,7 +62,19 @@ void NullBackend::release(const frame::Target& target, std::span<const std::uint
     for (std::uint64_t id : released) {
         versions_.erase(id);
         streams_.erase(id);
-        triangles_.erase(id);
+    }
+    // Index copies go with their IndexBuffer and with the mesh whose vertex
+    // order they follow.
+    auto gone = [&](std::uint64_t id) {
+        return id && std::find(released.begin(), released.end(), id) != released.end();
+    };
+    for (auto it = indexVersions_.begin(); it != indexVersions_.end();) {
+        if (gone(it->first.first) || gone(it->first.second)) {
+            triangles_.erase(it->first);
+            it = indexVersions_.erase(it);
+        } else {
+            ++it;
+        }
     }
     calls_.push_back({Call::Kind::Release, target, {}, {}, {released.begin(), released.end()}});
 }

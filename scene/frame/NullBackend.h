@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <map>
+#include <utility>
 #include <vector>
 
 #include <m3g/frame/FrameBackend.h>
@@ -41,10 +42,13 @@ public:
     const Uploads& uploads() const noexcept { return uploads_; }
     /// The last vertex streams read for `owner` (floats per stream).
     const std::vector<std::vector<float>>& lastStreams(std::uint64_t owner) const { return streams_.at(owner); }
-    /// The last triangle list read for index buffer `id`.
-    const std::vector<std::uint32_t>& lastTriangles(std::uint64_t id) const { return triangles_.at(id); }
+    /// The last triangle list read for index buffer `id` (remapped to the
+    /// vertex order of mesh `vertexOrder`, IndexRef::vertexOrder).
+    const std::vector<std::uint32_t>& lastTriangles(std::uint64_t id, std::uint64_t vertexOrder = 0) const {
+        return triangles_.at({id, vertexOrder});
+    }
     /// How many resource copies are held (freed by release's ids).
-    std::size_t resident() const noexcept { return versions_.size(); }
+    std::size_t resident() const noexcept { return versions_.size() + indexVersions_.size(); }
 
 private:
     void refresh(const frame::DrawList& list, frame::FrameSources& sources);
@@ -55,7 +59,10 @@ private:
     Uploads uploads_;
     std::map<std::uint64_t, std::uint64_t> versions_;  // id -> version (or revision) held
     std::map<std::uint64_t, std::vector<std::vector<float>>> streams_;
-    std::map<std::uint64_t, std::vector<std::uint32_t>> triangles_;
+    // Index copies per (IndexBuffer, vertex order): (revision, order version).
+    using IndexKey = std::pair<std::uint64_t, std::uint64_t>;
+    std::map<IndexKey, std::pair<std::uint32_t, std::uint64_t>> indexVersions_;
+    std::map<IndexKey, std::vector<std::uint32_t>> triangles_;
 };
 
 }  // namespace m3g::detail

@@ -208,7 +208,14 @@ void Picker::intersectMesh(Mesh& mesh, const glm::mat4& toGroup) {
             for (int c = 0; c < 3; ++c) scratch_[i + c] = scale * scratch_[i + c] + bias[c];
         positions_ = scratch_.data();
     }
-    auto vertex = [&](int i) { return glm::vec3(positions_[i * 3], positions_[i * 3 + 1], positions_[i * 3 + 2]); };
+    // Deformed vertices may come in an order of their own (a SkinnedMesh's,
+    // DeformedVertices::order): mesh vertex i is at slot location[i].
+    const std::span<const std::uint32_t> location =
+        deformed_ ? deformer_.vertices().location : std::span<const std::uint32_t>{};
+    auto vertex = [&](int i) {
+        const std::size_t at = location.empty() ? static_cast<std::size_t>(i) : location[static_cast<std::size_t>(i)];
+        return glm::vec3(positions_[at * 3], positions_[at * 3 + 1], positions_[at * 3 + 2]);
+    };
 
     // Skip the triangles when the ray misses the vertices' bounding box (or
     // meets it only beyond the closest hit so far).
@@ -277,7 +284,8 @@ void Picker::recordMeshHit(Mesh& mesh, int submesh, float t, const int idx[3], f
     if (def && !def->normals.empty()) {
         glm::vec3 n(0.0f);
         for (int k = 0; k < 3; ++k)
-            for (int c = 0; c < 3; ++c) n[c] += w[k] * def->normals[static_cast<std::size_t>(idx[k]) * 3 + c];
+            for (int c = 0; c < 3; ++c)
+                n[c] += w[k] * def->normals[std::size_t{def->slotOf(static_cast<std::uint32_t>(idx[k]))} * 3 + c];
         hit_.normal = n;
     } else if (const VertexArray* normals = vb.normals(); normals && !def) {
         const int size = normals->getComponentType();
@@ -300,7 +308,7 @@ void Picker::recordMeshHit(Mesh& mesh, int submesh, float t, const int idx[3], f
         glm::vec4 str(0.0f, 0.0f, 0.0f, 1.0f);
         for (int k = 0; k < 3; ++k)
             for (int c = 0; c < comps; ++c) {
-                const float raw = morphed ? def->texCoords[u][static_cast<std::size_t>(idx[k]) * comps + c]
+                const float raw = morphed ? def->texCoords[u][std::size_t{def->slotOf(static_cast<std::uint32_t>(idx[k]))} * comps + c]
                                           : static_cast<float>(tex->value(idx[k], c));
                 str[c] += w[k] * raw;
             }

@@ -125,11 +125,10 @@ bool loadSkinned(benchmark::State& state, const SkinnedFile& file, SkinnedScene&
     options.lenient = file.lenient;
     f.loaded = Loader::loadDetailed(path.string(), options);
     // How the kernels see the vertices (InfluencePartition, as MeshDeformer
-    // builds it): in shared-influence runs of the mesh's order, in runs of
-    // the compact space (the other vertices sorted by influence set), in its
-    // bone runs (shared bones, own weights), and loose (the list kernel,
-    // vertex by vertex).
-    std::size_t runVertices = 0, compactRunVertices = 0, boneRunVertices = 0, looseVertices = 0;
+    // builds it: every vertex with influences in the compact space, sorted
+    // by influence set): in its runs, in its bone runs (shared bones, own
+    // weights), and loose (the list kernel, vertex by vertex).
+    std::size_t compactRunVertices = 0, boneRunVertices = 0, looseVertices = 0;
     for (const auto& o : f.loaded.objects) {
         if (auto* s = dynamic_cast<SkinnedMesh*>(o.get())) {
             f.meshes.push_back(s);
@@ -139,9 +138,8 @@ bool loadSkinned(benchmark::State& state, const SkinnedFile& file, SkinnedScene&
             skin::InfluencePartition p;
             p.build(table.bones(), table.weights(), table.maxInfluences(),
                     static_cast<std::size_t>(s->getVertexBuffer()->getVertexCount()),
-                    skin::InfluencePartition::kMinInPlaceRun);
+                    skin::InfluencePartition::kNoInPlaceRuns);
             for (int c = 1; c <= p.maxInfluences(); ++c) {
-                for (const auto& run : p.runs(c)) runVertices += run.vertexCount;
                 for (const auto& run : p.compactRuns(c)) compactRunVertices += run.vertexCount;
                 for (const auto& run : p.compactBoneRuns(c)) boneRunVertices += run.vertexCount;
                 looseVertices += p.compactLoose(c).size();
@@ -156,7 +154,6 @@ bool loadSkinned(benchmark::State& state, const SkinnedFile& file, SkinnedScene&
     state.counters["vertices"] = f.vertices;
     state.counters["tracks"] = f.tracks;
     state.counters["period_ms"] = f.period;
-    state.counters["in_runs"] = static_cast<double>(runVertices);
     state.counters["compact_runs"] = static_cast<double>(compactRunVertices);
     state.counters["bone_runs"] = static_cast<double>(boneRunVertices);
     state.counters["loose"] = static_cast<double>(looseVertices);

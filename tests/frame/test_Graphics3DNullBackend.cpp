@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <vector>
 
@@ -744,11 +745,43 @@ struct SkinScene {
     }
 };
 
+// The CPU-deformed vertices come in the deformer's order (the one-bone
+// vertices 2 and 3, then the two-bone vertices 0 and 1), so the draw's
+// triangles are remapped: the strip's own list 2 0 1, 3 2 1 (provoking
+// vertex first) becomes 0 2 3, 1 0 3.
+const std::vector<std::uint32_t> kStripTriangles{2, 0, 1, 3, 2, 1};
+const std::vector<std::uint32_t> kSkinSceneSlots{2, 3, 0, 1};  // slot of mesh vertex v
+
+/// The slot of each mesh vertex as the last draw's triangles give it,
+/// corner by corner against the strip's own list (each vertex one slot).
+std::vector<std::uint32_t> slotsOf(const NullBackend& nb, const Draw& d) {
+    const auto& remapped = nb.lastTriangles(d.indices.id, d.indices.vertexOrder);
+    std::vector<std::uint32_t> slot(4, 99);
+    EXPECT_EQ(remapped.size(), kStripTriangles.size());
+    for (std::size_t i = 0; i < std::min(remapped.size(), kStripTriangles.size()); ++i) {
+        std::uint32_t& s = slot[kStripTriangles[i]];
+        EXPECT_TRUE(s == 99 || s == remapped[i]) << "corner " << i;
+        s = remapped[i];
+    }
+    return slot;
+}
+
+/// Vertex v of a stream in the mesh's order (a MorphingMesh's).
 void expectXyz(const std::vector<float>& s, int v, float x, float y, float z) {
     ASSERT_GE(s.size(), static_cast<std::size_t>(v) * 3 + 3);
     EXPECT_NEAR(s[v * 3], x, 1e-5f) << "vertex " << v;
     EXPECT_NEAR(s[v * 3 + 1], y, 1e-5f) << "vertex " << v;
     EXPECT_NEAR(s[v * 3 + 2], z, 1e-5f) << "vertex " << v;
+}
+
+/// Mesh vertex v of the last draw's positions, found through its triangles.
+void expectXyz(const NullBackend& nb, const Draw& d, std::uint32_t v, float x, float y, float z) {
+    const auto& s = nb.lastStreams(d.vertices.owner)[POSITIONS];
+    const std::size_t at = slotsOf(nb, d)[v];
+    ASSERT_GE(s.size(), at * 3 + 3);
+    EXPECT_NEAR(s[at * 3], x, 1e-5f) << "vertex " << v;
+    EXPECT_NEAR(s[at * 3 + 1], y, 1e-5f) << "vertex " << v;
+    EXPECT_NEAR(s[at * 3 + 2], z, 1e-5f) << "vertex " << v;
 }
 
 }  // namespace
@@ -766,11 +799,14 @@ TEST_F(Graphics3DNull, SkinnedMeshDeformedOnTheCpu) {
     const Draw& d = f.last().list.draws.at(0);
     EXPECT_EQ(d.vertices.source, VertexSource::Deformed);
     EXPECT_EQ(d.vertices.owner, s.mesh->getObjectId());
-    const auto& p = nb.lastStreams(s.mesh->getObjectId())[POSITIONS];
-    expectXyz(p, 0, 0.5f, 0.0f, 0.0f);
-    expectXyz(p, 1, 2.5f, 0.0f, 0.0f);
-    expectXyz(p, 2, 1.0f, 1.0f, 0.0f);
-    expectXyz(p, 3, 3.0f, 1.0f, 0.0f);
+    EXPECT_EQ(d.indices.vertexOrder, s.mesh->getObjectId());
+    EXPECT_EQ(nb.lastTriangles(d.indices.id, d.indices.vertexOrder),
+              (std::vector<std::uint32_t>{0, 2, 3, 1, 0, 3}));
+    EXPECT_EQ(slotsOf(nb, d), kSkinSceneSlots);
+    expectXyz(nb, d, 0, 0.5f, 0.0f, 0.0f);
+    expectXyz(nb, d, 1, 2.5f, 0.0f, 0.0f);
+    expectXyz(nb, d, 2, 1.0f, 1.0f, 0.0f);
+    expectXyz(nb, d, 3, 3.0f, 1.0f, 0.0f);
     // Deformed positions are already scaled and biased.
     const DrawUniforms& u = uniformsOf(f.last(), 0);
     EXPECT_EQ(u.positionScaleBias[0], 0.0f);
@@ -783,7 +819,7 @@ TEST_F(Graphics3DNull, SkinnedMeshReReadOnlyWhenThePoseChanges) {
     SkinScene s;
     g->render(s.mesh.get(), nullptr);
     const std::uint64_t v1 = f.last().list.draws[0].vertices.version;
-    expectXyz(nb.lastStreams(s.mesh->getObjectId())[POSITIONS], 3, 2.0f, 1.0f, 0.0f);  // at rest
+    expectXyz(nb, f.last().list.draws[0], 3, 2.0f, 1.0f, 0.0f);  // at rest
     g->render(s.mesh.get(), nullptr);
     EXPECT_EQ(f.last().list.draws[0].vertices.version, v1);
     EXPECT_EQ(nb.uploads().vertices, 1);
@@ -791,9 +827,55 @@ TEST_F(Graphics3DNull, SkinnedMeshReReadOnlyWhenThePoseChanges) {
     g->render(s.mesh.get(), nullptr);
     EXPECT_GT(f.last().list.draws[0].vertices.version, v1);
     EXPECT_EQ(nb.uploads().vertices, 2);
-    EXPECT_EQ(nb.uploads().indices, 1);
-    expectXyz(nb.lastStreams(s.mesh->getObjectId())[POSITIONS], 3, 2.0f, 1.0f, 1.0f);
-    expectXyz(nb.lastStreams(s.mesh->getObjectId())[POSITIONS], 0, 0.0f, -1.0f, 0.5f);
+    EXPECT_EQ(nb.uploads().indices, 1);  // the same order: the remapped copy is kept
+    expectXyz(nb, f.last().list.draws[0], 3, 2.0f, 1.0f, 1.0f);
+    expectXyz(nb, f.last().list.draws[0], 0, 0.0f, -1.0f, 0.5f);
+}
+
+TEST_F(Graphics3DNull, SkinnedMeshStaticStreamsAndTrianglesFollowTheDeformedOrder) {
+    g->setSkinningMode(Graphics3D::SKINNING_CPU);
+    begin();
+    {
+        SkinScene s;
+        // Colours and texture coordinates of vertex v: v * 10 + component.
+        s.vb->setColors(frametest::bytes(4, {0, 1, 2, 3, 10, 11, 12, 13, 20, 21, 22, 23, 30, 31, 32, 33}).get());
+        const std::array<float, 3> zero{};
+        s.vb->setTexCoords(0, frametest::shorts(2, {0, 1, 10, 11, 20, 21, 30, 31}).get(), 1.0f, zero);
+        g->render(s.mesh.get(), nullptr);
+        const Draw& d = f.last().list.draws.at(0);
+        ASSERT_EQ(slotsOf(nb, d), kSkinSceneSlots);
+        const auto& streams = nb.lastStreams(s.mesh->getObjectId());
+        ASSERT_EQ(streams[COLORS].size(), 16u);
+        ASSERT_EQ(streams[TEXCOORDS0].size(), 12u);
+        for (std::uint32_t v = 0; v < 4; ++v) {
+            const std::size_t at = kSkinSceneSlots[v];
+            for (std::size_t k = 0; k < 4; ++k)
+                EXPECT_NEAR(streams[COLORS][at * 4 + k], static_cast<float>(v * 10 + k) / 255.0f, 1e-6f) << v;
+            for (std::size_t k = 0; k < 2; ++k)
+                EXPECT_EQ(streams[TEXCOORDS0][at * 3 + k], static_cast<float>(v * 10 + k)) << v;
+        }
+        // The colours are converted once per change of their array (or of
+        // the order), not at every pose; an edit is read.
+        s.a->setTranslation(1, 0, 0);
+        g->render(s.mesh.get(), nullptr);
+        EXPECT_NEAR(nb.lastStreams(s.mesh->getObjectId())[COLORS][kSkinSceneSlots[3] * 4], 30.0f / 255.0f, 1e-6f);
+        const std::int8_t red[] = {100, 0, 0, 0};
+        s.vb->colors()->set(3, 1, std::span<const std::int8_t>(red));
+        g->render(s.mesh.get(), nullptr);
+        EXPECT_NEAR(nb.lastStreams(s.mesh->getObjectId())[COLORS][kSkinSceneSlots[3] * 4], 100.0f / 255.0f, 1e-6f);
+        // Bone b on vertices 2 and 3 too: one influence set, the mesh's own
+        // order, so the IndexBuffer's triangles as they are (a new copy).
+        s.mesh->addTransform(s.b.get(), 1, 2, 2);
+        g->render(s.mesh.get(), nullptr);
+        const Draw& same = f.last().list.draws.at(0);
+        EXPECT_EQ(same.indices.vertexOrder, 0u);
+        EXPECT_EQ(nb.lastTriangles(same.indices.id), kStripTriangles);
+        EXPECT_EQ(nb.uploads().indices, 2);
+        EXPECT_NEAR(nb.lastStreams(s.mesh->getObjectId())[COLORS][4], 10.0f / 255.0f, 1e-6f);
+    }
+    // The remapped copy goes with the mesh.
+    g->releaseTarget();
+    EXPECT_EQ(nb.resident(), 0u);
 }
 
 TEST_F(Graphics3DNull, SkinnedMeshForTheGpuHandsTheKernelInputs) {
@@ -890,5 +972,5 @@ TEST_F(Graphics3DNull, SwitchingTheSkinningModeReReadsTheMesh) {
     g->render(s.mesh.get(), nullptr);
     EXPECT_EQ(f.last().list.draws[0].vertices.source, VertexSource::Deformed);
     EXPECT_EQ(nb.uploads().vertices, 3);
-    expectXyz(nb.lastStreams(s.mesh->getObjectId())[POSITIONS], 1, 2.0f, -1.0f, 0.0f);
+    expectXyz(nb, f.last().list.draws[0], 1, 2.0f, -1.0f, 0.0f);
 }

@@ -416,17 +416,16 @@ TEST(ObjectDump, SkinnedMeshBonesAndSkeleton) {
     EXPECT_EQ(object(doc, m.at("skeleton").get<int>()).at("parent").get<int>(), 0);
     EXPECT_EQ(doc.at("objectCount").get<int>(), 7);  // mesh, vb, array, strips, skeleton, upper, lower
     // v0, v1: lower only; v2: both (equal weights); v3..v7: upper only. The
-    // five upper-only vertices share their slots, but a run of the mesh's
-    // order is kept in place only from kMinInPlaceRun (16) vertices on, as
-    // MeshDeformer builds it: all eight go to the compact space.
+    // five upper-only vertices share their slots: one run of the mesh's own
+    // order (at least kMinRun = 4), the other three loose in it.
     const json& layout = m.at("influenceLayout");
     EXPECT_EQ(layout.at("verticesByInfluenceCount").get<std::vector<int>>(), (std::vector<int>{0, 7, 1, 0, 0}));
-    EXPECT_EQ(layout.at("runs").get<int>(), 0);
-    EXPECT_EQ(layout.at("runVertices").get<int>(), 0);
-    EXPECT_EQ(layout.at("longestRun").get<int>(), 0);
-    EXPECT_EQ(layout.at("looseVertices").get<int>(), 8);
-    // The compact space: v3..v7 one run (at least kMinRun = 4); v0, v1
-    // (lower) and v2 (both), too few to share a run.
+    EXPECT_EQ(layout.at("runs").get<int>(), 1);
+    EXPECT_EQ(layout.at("runVertices").get<int>(), 5);
+    EXPECT_EQ(layout.at("longestRun").get<int>(), 5);
+    EXPECT_EQ(layout.at("looseVertices").get<int>(), 3);
+    // The compact space, where MeshDeformer skins all eight: v3..v7 one run;
+    // v0, v1 (lower) and v2 (both), too few to share a run.
     EXPECT_EQ(layout.at("compactRuns").get<int>(), 1);
     EXPECT_EQ(layout.at("compactRunVertices").get<int>(), 5);
     EXPECT_EQ(layout.at("compactBoneRuns").get<int>(), 0);

@@ -433,6 +433,32 @@ TEST(PickRay, SkinnedMeshIsPickedAtItsDeformedPosition) {
     EXPECT_NEAR(ri.getNormalZ(), -1.0f, 1e-5f);  // the skinned normal
 }
 
+TEST(PickRay, SkinnedMeshIsPickedThroughItsDeformedVertexOrder) {
+    // Vertex 0 on bone b, vertices 1 and 2 on bone a (added first): the
+    // deformed vertices come grouped by influence set (1, 2, then 0;
+    // DeformedVertices::order), and the pick reads mesh vertex i where it
+    // is. Both bones move by (20, 0, -4): the hit at local (2, 3) has
+    // t = 9 and the texture coordinates interpolated there, s = 2, t = 3.
+    Ref<Group> skeleton = new Group();
+    Ref<Group> a = new Group(), b = new Group();
+    skeleton->addChild(a);
+    skeleton->addChild(b);
+    Ref<VertexBuffer> vb = positionsVB({0, 0, 0, 10, 0, 0, 0, 10, 0});
+    vb->setTexCoords(0, shortArray({0, 0, 10, 0, 0, 10}, 2), 1.0f, {});
+    Ref<SkinnedMesh> m = new SkinnedMesh(vb, triangles({0, 1, 2}), new Appearance(), skeleton);
+    m->addTransform(a, 1, 1, 2);
+    m->addTransform(b, 1, 0, 1);
+    a->setTranslation(20, 0, -4);
+    b->setTranslation(20, 0, -4);
+    Ref<Group> g = new Group();
+    g->addChild(m);
+    RayIntersection ri;
+    ASSERT_TRUE(g->pick(-1, 22, 3, 5, 0, 0, -1, &ri));
+    EXPECT_FLOAT_EQ(ri.getDistance(), 9.0f);
+    EXPECT_NEAR(ri.getTextureS(0), 2.0f, 1e-5f);
+    EXPECT_NEAR(ri.getTextureT(0), 3.0f, 1e-5f);
+}
+
 TEST(PickRay, MorphingMeshIsPickedAtItsMorphedPosition) {
     // Base at z = 0, target at z = -8 with texcoords shifted by 10 in s;
     // weight 0.5 puts the triangle at z = -4 and adds 5 to s.

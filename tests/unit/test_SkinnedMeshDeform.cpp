@@ -69,18 +69,26 @@ struct Rig {
     }
 };
 
+// Mesh vertex v of the deformed output, wherever its slot is
+// (DeformedVertices::order).
 void expectPosition(const MeshDeformer& d, int v, double x, double y, double z, double tol = 1e-5) {
     const auto& p = d.vertices().positions;
-    ASSERT_GE(p.size(), static_cast<std::size_t>(v) * 3 + 3);
-    EXPECT_NEAR(p[v * 3], x, tol) << "vertex " << v << " x";
-    EXPECT_NEAR(p[v * 3 + 1], y, tol) << "vertex " << v << " y";
-    EXPECT_NEAR(p[v * 3 + 2], z, tol) << "vertex " << v << " z";
+    const std::size_t s = d.vertices().slotOf(static_cast<std::uint32_t>(v));
+    ASSERT_GE(p.size(), s * 3 + 3);
+    EXPECT_NEAR(p[s * 3], x, tol) << "vertex " << v << " x";
+    EXPECT_NEAR(p[s * 3 + 1], y, tol) << "vertex " << v << " y";
+    EXPECT_NEAR(p[s * 3 + 2], z, tol) << "vertex " << v << " z";
 }
 void expectNormal(const MeshDeformer& d, int v, std::array<double, 3> n, double tol = 1e-6) {
     const auto& a = d.vertices().normals;
-    ASSERT_GE(a.size(), static_cast<std::size_t>(v) * 3 + 3);
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[v * 3 + c], n[c], tol) << "vertex " << v << " normal " << c;
+    const std::size_t s = d.vertices().slotOf(static_cast<std::uint32_t>(v));
+    ASSERT_GE(a.size(), s * 3 + 3);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[s * 3 + c], n[c], tol) << "vertex " << v << " normal " << c;
 }
+std::vector<float> positionsInMeshOrder(const MeshDeformer& d) {
+    return d.vertices().inMeshOrder(d.vertices().positions, 3);
+}
+std::vector<float> normalsInMeshOrder(const MeshDeformer& d) { return d.vertices().inMeshOrder(d.vertices().normals, 3); }
 
 }  // namespace
 
@@ -383,15 +391,15 @@ TEST(SkinnedMeshDeform, RandomRigAgreesWithReferenceAndPaperBaseline) {
     }
     const std::vector<double> a(toMesh.begin(), toMesh.end()), r(rest.begin(), rest.end());
     const auto ref = m3gtest::referenceSkin(records, 4, a, r, n, meshPos, meshNrm);
-    EXPECT_TRUE(m3gtest::closeXyz(d.vertices().positions, ref.positions));
-    EXPECT_TRUE(m3gtest::closeXyz(d.vertices().normals, ref.normals));
+    EXPECT_TRUE(m3gtest::closeXyz(positionsInMeshOrder(d), ref.positions));
+    EXPECT_TRUE(m3gtest::closeXyz(normalsInMeshOrder(d), ref.normals));
 
     std::vector<float> pf(meshPos.begin(), meshPos.end()), nf(meshNrm.begin(), meshNrm.end()), bp(pf.size()),
         bn(nf.size());
     m3gbench::SkinBaseline baseline(4);
     baseline.deform(records, static_cast<std::size_t>(mesh->boneCount()), toMesh, rest, n, pf, nf, bp, bn);
-    EXPECT_TRUE(m3gtest::closeXyz(d.vertices().positions, bp));
-    EXPECT_TRUE(m3gtest::closeXyz(d.vertices().normals, bn));
+    EXPECT_TRUE(m3gtest::closeXyz(positionsInMeshOrder(d), bp));
+    EXPECT_TRUE(m3gtest::closeXyz(normalsInMeshOrder(d), bn));
 }
 
 TEST(SkinnedMeshDeform, LargeMeshTakesTheParallelPath) {
@@ -493,7 +501,7 @@ TEST(SkinnedMeshDeform, BoneAddedAfterAnUpdateUsesItsAtRestMatrix) {
 // 1 with weights that change from vertex to vertex (compact, loose), v % 3
 // == 2 bone 1 alone (a compact run); bone 0 posed T(10, 0, 0), bone 1
 // T(0, 20, 0).
-TEST(SkinnedMeshDeform, InterleavedInfluencesKeepTheMeshOrder) {
+TEST(SkinnedMeshDeform, InterleavedInfluencesComeOutInInfluenceOrder) {
     const int n = 24;
     Shorts pos, nrm;
     for (int v = 0; v < n; ++v) {
@@ -521,6 +529,17 @@ TEST(SkinnedMeshDeform, InterleavedInfluencesKeepTheMeshOrder) {
     EXPECT_EQ(part.compactBoneRuns(2)[0].vertexCount, 5u);
     MeshDeformer d;
     ASSERT_TRUE(d.update(*r.mesh));
+    // The outputs stay in the compact space's order (nothing is copied back
+    // to the mesh's): the eight bone-0 vertices, the eight bone-1 ones, then
+    // the two-bone vertices; location inverts it.
+    const auto& out = d.vertices();
+    ASSERT_EQ(out.order.size(), static_cast<std::size_t>(n));
+    ASSERT_EQ(out.location.size(), static_cast<std::size_t>(n));
+    for (std::uint32_t i = 0; i < 8; ++i) {
+        EXPECT_EQ(out.order[i], 3 * i) << i;
+        EXPECT_EQ(out.order[8 + i], 3 * i + 2) << i;
+    }
+    for (std::uint32_t v = 0; v < static_cast<std::uint32_t>(n); ++v) EXPECT_EQ(out.order[out.location[v]], v);
     for (int v = 0; v < n; ++v) {
         double w0 = v % 3 == 0 ? 1.0 : v % 3 == 2 ? 0.0 : (1.0 + v) / ((1.0 + v) + (30.0 - v));
         expectPosition(d, v, v + 10.0 * w0, 2.0 * v + 20.0 * (1.0 - w0), -v);

@@ -305,25 +305,28 @@ struct Dumper {
         j["influenceLayout"] = influenceLayout(m);
     }
 
-    /// How the CPU skinning kernel sees the mesh's vertices (docs/skinning.md):
-    /// how many have 0..N influences, and how many of those with at least
-    /// one lie in shared-influence runs (one blend per run) or are loose
-    /// (one blend per vertex).
+    /// How the CPU skinning kernels see the mesh's vertices (docs/skinning.md):
+    /// how many have 0..N influences; how many of those with at least one
+    /// lie in shared-influence runs of the mesh's own order (the exporter's
+    /// layout); and how MeshDeformer skins them, all in the compact space
+    /// (sorted by influence set): in runs sharing every slot (one blend per
+    /// run), in bone runs sharing their bones, or one by one.
     static Json influenceLayout(const SkinnedMesh* m) {
         const skin::InfluenceTable& table = m->influenceTable();
         const VertexBuffer* vb = m->getVertexBuffer().get();
         const auto vertices = static_cast<std::size_t>(vb ? vb->getVertexCount() : 0);
-        skin::InfluencePartition partition;
+        skin::InfluencePartition meshOrder, partition;
+        meshOrder.build(table.bones(), table.weights(), table.maxInfluences(), vertices);
         partition.build(table.bones(), table.weights(), table.maxInfluences(), vertices,
-                        skin::InfluencePartition::kMinInPlaceRun);  // as MeshDeformer
+                        skin::InfluencePartition::kNoInPlaceRuns);  // as MeshDeformer
         std::vector<int> byCount;
         int runs = 0, runVertices = 0, loose = 0, longest = 0;
         int compactRuns = 0, compactRunVertices = 0, compactLoose = 0, boneRuns = 0, boneRunVertices = 0;
         for (int c = 0; c <= partition.maxInfluences(); ++c) {
             byCount.push_back(static_cast<int>(partition.group(c).size()));
             if (c == 0) continue;
-            loose += static_cast<int>(partition.loose(c).size());
-            for (const skin::InfluenceRun& r : partition.runs(c)) {
+            loose += static_cast<int>(meshOrder.loose(c).size());
+            for (const skin::InfluenceRun& r : meshOrder.runs(c)) {
                 ++runs;
                 runVertices += static_cast<int>(r.vertexCount);
                 longest = std::max(longest, static_cast<int>(r.vertexCount));
@@ -343,8 +346,8 @@ struct Dumper {
         j["runs"] = runs;
         j["runVertices"] = runVertices;
         j["longestRun"] = longest;
-        // Vertices in no run of the mesh's order; the kernels take them in
-        // the compact space (sorted by influence set): as runs sharing
+        // Vertices in no run of the mesh's order. The kernels take every
+        // vertex with influences in the compact space: as runs sharing
         // every slot, as bone runs sharing their bones (each vertex with
         // its own weights), or one by one (compactLooseVertices).
         j["looseVertices"] = loose;

@@ -89,6 +89,14 @@ struct VertexRef {
 struct IndexRef {
     std::uint64_t id = 0;
     std::uint32_t revision = 0;
+    /// 0: the indices name the VertexBuffer's vertices. Otherwise the owner
+    /// of the draw's VertexRef, whose CPU-deformed vertices come in an order
+    /// of their own (a SkinnedMesh's, grouped by influence set): the
+    /// triangles are remapped to it, and a back end keeps one copy per
+    /// (id, vertexOrder), made again when `orderVersion` changes.
+    std::uint64_t vertexOrder = 0;
+    std::uint64_t orderVersion = 0;
+    friend bool operator==(const IndexRef&, const IndexRef&) = default;
 };
 
 /// Dynamic rasterizer state of a draw (PolygonMode, CompositingMode).

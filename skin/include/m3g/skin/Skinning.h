@@ -124,13 +124,12 @@ public:
     /// kernel (from four vertices on, one blend per run costs no more than
     /// the loose path's blend per vertex; BM_SkinRunLength).
     static constexpr std::size_t kMinRun = 4;
-    /// Shortest run of the mesh's order worth keeping in place when the
-    /// caller also skins the compact space (MeshDeformer does; pass it as
-    /// build()'s `minRun`): a shorter one costs a blend and a partly empty
-    /// block of its own, while in the compact space it joins the other
-    /// vertices of its influence set in one run. Copy back included, that
-    /// is faster on every skinned corpus file (docs/skinning.md).
-    static constexpr std::size_t kMinInPlaceRun = 16;
+    /// build()'s `minRun` for a caller that skins only the compact space
+    /// (MeshDeformer): no run of the mesh's order is kept in place, so every
+    /// vertex with influences is in the compact space, where the vertices
+    /// of one influence set form one run however the mesh interleaves them
+    /// (docs/skinning.md).
+    static constexpr std::size_t kNoInPlaceRuns = static_cast<std::size_t>(-1);
 
     /// Groups vertices [0, vertexCount). `boneIndices` holds
     /// tableVertexCount * stride slots (tableVertexCount may be smaller or
@@ -162,9 +161,10 @@ public:
     // blocks. Slots keep the table's order. Built with the groups,
     // when the table changes (never per frame). A caller gathers the inputs
     // into compact order when they change (compactOrder()[i] is the mesh
-    // vertex at compact position i), skins the compact arrays and writes
-    // each output back to its mesh vertex (scatterXyz): the output order
-    // stays the mesh's.
+    // vertex at compact position i) and skins the compact arrays; the
+    // outputs are in compact order (MeshDeformer keeps them so and its
+    // consumers draw through the permutation), or written back to their
+    // mesh vertices with scatterXyz.
 
     /// Mesh vertex of each compact position (each loose vertex once).
     std::span<const std::uint32_t> compactOrder() const noexcept { return compactOrder_; }
