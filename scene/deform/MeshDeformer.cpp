@@ -230,7 +230,7 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         planGroups();
     }
 
-    // The palette, once per bone    // The palette, once per bone: (bone -> mesh now) x (at rest). The
+    // The palette, once per bone: (bone -> mesh now) x (at rest). The
     // at-rest matrices are captured by addTransform, which also changes the
     // table: copied only then. No node on the bones' paths changed: the
     // palette, and so the vertices, are the last call's.
