@@ -878,6 +878,33 @@ TEST_F(Graphics3DNull, SkinnedMeshStaticStreamsAndTrianglesFollowTheDeformedOrde
     EXPECT_EQ(nb.resident(), 0u);
 }
 
+TEST_F(Graphics3DNull, SkinnedMeshesSharingAnIndexBufferEachDrawItInTheirOwnOrder) {
+    // Two SkinnedMeshes on one VertexBuffer and IndexBuffer: the first with
+    // SkinScene's influences (its own order 2 3 0 1), the second with one
+    // bone on every vertex (the mesh's order). Each draw gets its triangles:
+    // one copy per (IndexBuffer, vertex order).
+    g->setSkinningMode(Graphics3D::SKINNING_CPU);
+    begin();
+    SkinScene s;
+    Ref<Group> skeleton = new Group(), bone = new Group();
+    skeleton->addChild(bone.get());
+    Ref<SkinnedMesh> plain = new SkinnedMesh(s.vb.get(), s.mesh->getIndexBuffer(0).get(),
+                                             Ref<Appearance>(new Appearance()).get(), skeleton.get());
+    plain->addTransform(bone.get(), 1, 0, 4);
+    g->render(s.mesh.get(), nullptr);
+    const IndexRef first = f.last().list.draws.at(0).indices;
+    g->render(plain.get(), nullptr);
+    const IndexRef second = f.last().list.draws.at(0).indices;
+    EXPECT_EQ(first.id, second.id);
+    EXPECT_EQ(first.vertexOrder, s.mesh->getObjectId());
+    EXPECT_EQ(second.vertexOrder, 0u);
+    EXPECT_EQ(nb.lastTriangles(first.id, first.vertexOrder), (std::vector<std::uint32_t>{0, 2, 3, 1, 0, 3}));
+    EXPECT_EQ(nb.lastTriangles(second.id), kStripTriangles);
+    EXPECT_EQ(nb.uploads().indices, 2);
+    g->render(s.mesh.get(), nullptr);  // both copies kept
+    EXPECT_EQ(nb.uploads().indices, 2);
+}
+
 TEST_F(Graphics3DNull, SkinnedMeshForTheGpuHandsTheKernelInputs) {
     g->setSkinningMode(Graphics3D::SKINNING_COMPUTE);
     begin();
