@@ -134,6 +134,17 @@ std::vector<float> DeformedVertices::inMeshOrder(std::span<const float> values, 
     return out;
 }
 
+void DeformedVertices::inSlotOrder(std::span<const float> values, int components, std::vector<float>& out) const {
+    if (order.empty()) {
+        out.assign(values.begin(), values.end());
+        return;
+    }
+    const auto c = static_cast<std::size_t>(components);
+    out.resize(values.size());
+    for (std::size_t i = 0; i < order.size() && (std::size_t{order[i]} + 1) * c <= values.size(); ++i)
+        std::copy_n(values.data() + std::size_t{order[i]} * c, c, out.data() + i * c);
+}
+
 void MeshDeformer::addSource(const VertexBuffer* vb) {
     newSources_.push_back(vb ? Source{vb->getObjectId(), vb->getRevision()} : Source{});
 }
@@ -362,17 +373,13 @@ void MeshDeformer::planOrder(std::size_t n) {
     } else {
         location_.resize(n);
         for (std::size_t i = 0; i < n; ++i) location_[order_[i]] = static_cast<std::uint32_t>(i);
-        const bool normals = !baseNormals_.empty();
-        orderedPositions_.resize(n * 3);
-        orderedNormals_.resize(normals ? n * 3 : 0);
-        for (std::size_t i = 0; i < n; ++i) {
-            const std::size_t v = order_[i];
-            std::copy_n(rawPositions_.data() + v * 3, 3, orderedPositions_.data() + i * 3);
-            if (normals) std::copy_n(baseNormals_.data() + v * 3, 3, orderedNormals_.data() + i * 3);
-        }
     }
     out_.order = order_;
     out_.location = location_;
+    if (ordered_) {
+        out_.inSlotOrder(rawPositions_, 3, orderedPositions_);
+        out_.inSlotOrder(baseNormals_, 3, orderedNormals_);
+    }
 }
 
 void MeshDeformer::planGroups() {

@@ -43,6 +43,10 @@ struct DeformedVertices {
     /// `values` (a stream of this struct, `components` floats per slot)
     /// rearranged into the mesh's order.
     std::vector<float> inMeshOrder(std::span<const float> values, int components) const;
+    /// The other way: `values` in the mesh's order (`components` floats per
+    /// vertex) into `out` in this struct's order (a copy when `order` is
+    /// empty). For inputs and streams the deformation leaves alone.
+    void inSlotOrder(std::span<const float> values, int components, std::vector<float>& out) const;
     /// xyz per vertex in the mesh's local space, position scale and bias
     /// already applied (so a consumer uses scale 1, bias 0).
     std::vector<float> positions;

@@ -277,18 +277,13 @@ frame::VertexStreams FrameBuilder::vertexStreams(const frame::VertexRef& ref) {
     Statics& st = e.statics;
     const std::uint64_t orderStamp = e.deformer->orderStamp();
     if (!st.valid || st.signature != e.signature || st.order != orderStamp) {
-        const std::span<const std::uint32_t> order = e.deformer->vertices().order;
+        const DeformedVertices& deformed = e.deformer->vertices();
         for (int stream = frame::COLORS; stream < frame::STREAM_COUNT; ++stream) {
             auto& values = st.streams[static_cast<std::size_t>(stream - frame::COLORS)];
             values.clear();
             if (!needed(stream)) continue;
-            fill(stream, values);
-            if (order.empty()) continue;
-            const auto c = static_cast<std::size_t>(frame::kStreamComponents[static_cast<std::size_t>(stream)]);
-            reordered_.resize(values.size());
-            for (std::size_t i = 0; i < order.size() && (std::size_t{order[i]} + 1) * c <= values.size(); ++i)
-                std::copy_n(values.data() + std::size_t{order[i]} * c, c, reordered_.data() + i * c);
-            values.swap(reordered_);
+            fill(stream, reordered_);
+            deformed.inSlotOrder(reordered_, frame::kStreamComponents[static_cast<std::size_t>(stream)], values);
         }
         st.valid = true;
         st.signature = e.signature;

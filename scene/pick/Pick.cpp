@@ -209,11 +209,10 @@ void Picker::intersectMesh(Mesh& mesh, const glm::mat4& toGroup) {
         positions_ = scratch_.data();
     }
     // Deformed vertices may come in an order of their own (a SkinnedMesh's,
-    // DeformedVertices::order): mesh vertex i is at slot location[i].
-    const std::span<const std::uint32_t> location =
-        deformed_ ? deformer_.vertices().location : std::span<const std::uint32_t>{};
+    // DeformedVertices::order): mesh vertex i is at its slot.
+    const detail::DeformedVertices* def = deformed_ ? &deformer_.vertices() : nullptr;
     auto vertex = [&](int i) {
-        const std::size_t at = location.empty() ? static_cast<std::size_t>(i) : location[static_cast<std::size_t>(i)];
+        const std::size_t at = def ? def->slotOf(static_cast<std::uint32_t>(i)) : static_cast<std::size_t>(i);
         return glm::vec3(positions_[at * 3], positions_[at * 3 + 1], positions_[at * 3 + 2]);
     };
 

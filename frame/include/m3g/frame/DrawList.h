@@ -96,7 +96,6 @@ struct IndexRef {
     /// (id, vertexOrder), made again when `orderVersion` changes.
     std::uint64_t vertexOrder = 0;
     std::uint64_t orderVersion = 0;
-    friend bool operator==(const IndexRef&, const IndexRef&) = default;
 };
 
 /// Dynamic rasterizer state of a draw (PolygonMode, CompositingMode).
