@@ -269,6 +269,11 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         paletteJob.positionScale = vb.positionScale();
         paletteJob.positionBias = vb.positionBias();
     }
+    // Bones that only rotate and translate (one common scale): the
+    // bone-run kernels may turn normals with the position rows (half their
+    // per-lane blend). Measured only where there are bone runs.
+    bool conformal = false;
+    if (boneRuns_) paletteJob.conformal = &conformal;
     require(paletteJob.run(), "palette job");
     // Which entries changed, bit for bit (only the bones composed again can
     // have: an entry is a function of its bone's matrix, the at-rest matrix,
@@ -288,9 +293,11 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         }
         if (changed == 0) return false;
         // Every entry changed (the common animated frame): no run to leave
-        // out, the run lists as they are.
-        partial = changed < bones;
+        // out, the run lists as they are. Nor when the bone runs' normals
+        // change method (conformal_): the kept ones would be the other's.
+        partial = changed < bones && conformal == conformal_;
     }
+    conformal_ = conformal;
     palette_.swap(newPalette_);
     valid_ = false;
 
@@ -334,6 +341,7 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         job.boneIndices = partition_.compactBones();
         job.boneWeights = partition_.compactWeights();
         job.palette = palette_;
+        job.normalsFromPositions = conformal;
         // Influenced vertices: the palette applies the scale and bias.
         if (c == 0) {
             job.positionScale = skinInputs_.positionScale;
@@ -384,6 +392,7 @@ void MeshDeformer::planOrder(std::size_t n) {
 
 void MeshDeformer::planGroups() {
     groups_.clear();
+    boneRuns_ = false;
     for (int c = 0; c <= partition_.maxInfluences(); ++c) {
         const auto group = partition_.group(c);
         if (group.empty()) continue;
@@ -397,6 +406,7 @@ void MeshDeformer::planGroups() {
         g.vertices = partition_.compactLoose(c);
         g.runs = partition_.compactRuns(c);
         g.boneRuns = partition_.compactBoneRuns(c);
+        boneRuns_ |= !g.boneRuns.empty();
     }
 }
 

@@ -188,10 +188,12 @@ private:
     bool ordered_ = false;
     std::vector<float> orderedPositions_, orderedNormals_;
     std::vector<GroupPlan> groups_;    // the non-empty groups, ascending count
+    bool boneRuns_ = false;            // whether a group has bone runs
     BoneTransforms boneTransforms_;
     std::vector<float> boneMatrices_;  // 16 per bone: bone -> mesh now
     std::vector<float> atRest_;        // 16 per bone
     std::vector<skin::PaletteEntry> palette_, newPalette_;
+    bool conformal_ = false;  // PaletteJob::conformal of palette_ (bone runs only)
     // Per bone, whether its palette entry differs from the last call's (a
     // frame that keeps out_ recomputes only the runs of changed bones).
     std::vector<std::uint8_t> entryChanged_;

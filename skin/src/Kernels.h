@@ -2,6 +2,7 @@
 // Each processes a sub-range of an already validated job.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -64,6 +65,32 @@ std::uint32_t maxIndexAvx2(const std::uint32_t* indices, std::size_t count) noex
 inline bool isIdentityScaleBias(float scale, const std::array<float, 3>& bias) noexcept {
     return scale == 1.0f && bias[0] == 0.0f && bias[1] == 0.0f && bias[2] == 0.0f;
 }
+
+/// The bounds of a palette's Gram matrices (the 3x3s' rows dotted with
+/// each other): what PaletteJob::conformal is decided from. A scaled
+/// rotation's is s^2 I.
+struct GramBounds {
+    float minDiagonal = HUGE_VALF, maxDiagonal = 0.0f;  // squared row lengths
+    float maxOff = 0.0f;                                // |dot of two rows|
+    float sum = 0.0f;  // of every dot: not finite where an element is not
+    /// Adds three rows of four floats (xyz used), as PaletteEntry::position.
+    void add(const float* rows) noexcept {
+        auto dot = [](const float* a, const float* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+        const float g00 = dot(rows, rows), g11 = dot(rows + 4, rows + 4), g22 = dot(rows + 8, rows + 8);
+        const float g01 = dot(rows, rows + 4), g02 = dot(rows, rows + 8), g12 = dot(rows + 4, rows + 8);
+        minDiagonal = std::min({minDiagonal, g00, g11, g22});
+        maxDiagonal = std::max({maxDiagonal, g00, g11, g22});
+        maxOff = std::max({maxOff, std::abs(g01), std::abs(g02), std::abs(g12)});
+        sum += g00 + g11 + g22 + g01 + g02 + g12;
+    }
+    /// Every 3x3 added a rotation times one common scale (to within
+    /// kConformalTolerance of s^2), and `positionScale` positive.
+    bool conformal(float positionScale) const noexcept {
+        return std::isfinite(sum) && positionScale > 0.0f && minDiagonal > 0.0f &&
+               maxDiagonal - minDiagonal <= kConformalTolerance * minDiagonal &&
+               maxOff <= kConformalTolerance * minDiagonal;
+    }
+};
 
 /// True when every per-vertex array of `job` is packed xyz (strides 3): what
 /// the kernels' whole-block loads and stores of consecutive vertices need.

@@ -8,6 +8,21 @@
 
 namespace m3g::skin {
 
+namespace {
+
+/// PaletteJob::conformal from the entries written (the Scalar and SSE2
+/// paths; the AVX2 path measures its rows in registers). The position rows
+/// are the 3x3 times the position scale, which scales every Gram matrix
+/// alike.
+void reportConformal(const PaletteJob& job) noexcept {
+    if (!job.conformal) return;
+    detail::GramBounds bounds;
+    for (std::size_t b = 0; b < job.boneCount; ++b) bounds.add(job.output[b].position);
+    *job.conformal = bounds.conformal(job.positionScale);
+}
+
+}  // namespace
+
 bool PaletteJob::validate() const noexcept {
     const std::size_t floats = boneCount * 16;
     return boneToMesh.size() >= floats && atRest.size() >= floats && output.size() >= boneCount &&
@@ -20,7 +35,10 @@ bool PaletteJob::run() const noexcept {
     switch (resolveIsa(isa)) {
         case Isa::Avx2:
         case Isa::Avx512: detail::paletteAvx2(*this); return true;
-        case Isa::Sse2: detail::paletteSse2(*this); return true;
+        case Isa::Sse2:
+            detail::paletteSse2(*this);
+            reportConformal(*this);
+            return true;
         default: break;
     }
 #endif
@@ -64,6 +82,7 @@ bool PaletteJob::run() const noexcept {
             e.normal[i * 4 + 3] = 0.0f;
         }
     }
+    reportConformal(*this);
     return true;
 }
 

@@ -9,6 +9,8 @@
 // of a frame. Float with FMAs differs from the double formula by a few
 // units in the last place for well-conditioned bones (tested to 1e-6 of
 // the larger of 1 and the element), far inside what a float vertex holds.
+// PaletteJob::conformal is measured on the rows in registers (six dots per
+// bone in two rounds of horizontal adds) rather than read back.
 #include "Kernels.h"
 
 #ifdef M3G_SKIN_X86
@@ -45,10 +47,53 @@ M3G_AVX2 inline void foldPositionScaleBias(const PaletteJob& job, __m256 (&m)[3]
     }
 }
 
+/// GramBounds eight lanes wide: per half, the smallest and largest squared
+/// row length and largest |dot of two rows| of the bones seen in it (set
+/// by the caller: a constructor would be compiled without AVX).
+struct GramLanes {
+    __m256 minDiagonal, maxDiagonal, maxOff, sum;
+};
+
+/// Adds a pair of bones' 3x3s (rows m[0..2], w ignored) to `g`: the six
+/// dots of each half summed by two rounds of horizontal adds.
+M3G_AVX2 inline void addGram(const __m256 (&m)[3], GramLanes& g) noexcept {
+    const __m256 zero = _mm256_setzero_ps();
+    const __m256 r0 = _mm256_blend_ps(m[0], zero, 0x88), r1 = _mm256_blend_ps(m[1], zero, 0x88),
+                 r2 = _mm256_blend_ps(m[2], zero, 0x88);
+    const __m256 h0 = _mm256_hadd_ps(_mm256_mul_ps(r0, r0), _mm256_mul_ps(r1, r1));
+    const __m256 h1 = _mm256_hadd_ps(_mm256_mul_ps(r2, r2), _mm256_mul_ps(r0, r1));
+    const __m256 h2 = _mm256_hadd_ps(_mm256_mul_ps(r0, r2), _mm256_mul_ps(r1, r2));
+    const __m256 d = _mm256_hadd_ps(h0, h1);  // g00 g11 g22 g01 per half
+    const __m256 o = _mm256_hadd_ps(h2, h2);  // g02 g12 g02 g12 per half
+    g.minDiagonal = _mm256_min_ps(g.minDiagonal, _mm256_blend_ps(d, _mm256_set1_ps(HUGE_VALF), 0x88));
+    g.maxDiagonal = _mm256_max_ps(g.maxDiagonal, _mm256_blend_ps(d, zero, 0x88));
+    const __m256 off = _mm256_blend_ps(o, d, 0x88);  // g02 g12 g02 g01 per half
+    g.maxOff = _mm256_max_ps(g.maxOff, _mm256_andnot_ps(_mm256_set1_ps(-0.0f), off));
+    g.sum = _mm256_add_ps(g.sum, _mm256_add_ps(d, o));
+}
+
+/// The eight lanes folded into one GramBounds.
+M3G_AVX2 inline GramBounds gramBounds(const GramLanes& g) noexcept {
+    alignas(32) float lo[8], hi[8], off[8], sum[8];
+    _mm256_store_ps(lo, g.minDiagonal);
+    _mm256_store_ps(hi, g.maxDiagonal);
+    _mm256_store_ps(off, g.maxOff);
+    _mm256_store_ps(sum, g.sum);
+    GramBounds b;
+    for (int i = 0; i < 8; ++i) {
+        b.minDiagonal = std::min(b.minDiagonal, lo[i]);
+        b.maxDiagonal = std::max(b.maxDiagonal, hi[i]);
+        b.maxOff = std::max(b.maxOff, off[i]);
+        b.sum += sum[i];
+    }
+    return b;
+}
+
 /// Entries of bones `b0` (low half) and `b1` (high half; equal to b0 for
-/// the last bone of an odd count, then only `storeHigh` false).
+/// the last bone of an odd count, then only `storeHigh` false); with
+/// `gram`, their 3x3s added to it.
 M3G_AVX2 inline void pairOfBones(const PaletteJob& job, std::size_t b0, std::size_t b1, bool storeHigh,
-                                 bool foldScaleBias) noexcept {
+                                 bool foldScaleBias, GramLanes* gram) noexcept {
     const float* a0 = job.boneToMesh.data() + b0 * 16;
     const float* a1 = job.boneToMesh.data() + b1 * 16;
     const float* r0p = job.atRest.data() + b0 * 16;
@@ -65,6 +110,7 @@ M3G_AVX2 inline void pairOfBones(const PaletteJob& job, std::size_t b0, std::siz
                                _mm256_fmadd_ps(_mm256_permute_ps(ai, 0x55), r1,
                                                _mm256_fmadd_ps(_mm256_permute_ps(ai, 0x00), r0, t)));
     }
+    if (gram) addGram(m, *gram);
     // Cofactor rows: cof[i] = m[i+1] x m[i+2] (indices mod 3), w set to 0.
     const __m256 c0 = _mm256_blend_ps(cross(m[1], m[2]), zero, 0x88);
     const __m256 c1 = _mm256_blend_ps(cross(m[2], m[0]), zero, 0x88);
@@ -104,9 +150,13 @@ M3G_AVX2 inline void pairOfBones(const PaletteJob& job, std::size_t b0, std::siz
 
 M3G_AVX2 void paletteAvx2(const PaletteJob& job) noexcept {
     const bool fold = !isIdentityScaleBias(job.positionScale, job.positionBias);
+    GramLanes lanes{_mm256_set1_ps(HUGE_VALF), _mm256_setzero_ps(), _mm256_setzero_ps(), _mm256_setzero_ps()};
+    GramLanes* gram = job.conformal ? &lanes : nullptr;
     std::size_t b = 0;
-    for (; b + 2 <= job.boneCount; b += 2) pairOfBones(job, b, b + 1, true, fold);
-    if (b < job.boneCount) pairOfBones(job, b, b, false, fold);
+    for (; b + 2 <= job.boneCount; b += 2) pairOfBones(job, b, b + 1, true, fold, gram);
+    if (b < job.boneCount) pairOfBones(job, b, b, false, fold, gram);
+    // The position rows are these 3x3s times the position scale.
+    if (gram) *job.conformal = gramBounds(lanes).conformal(job.positionScale);
 }
 
 }  // namespace m3g::skin::detail

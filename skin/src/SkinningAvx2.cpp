@@ -713,7 +713,7 @@ M3G_AVX2_INLINE void blendRow8(const float* const (&e)[4], const __m256 (&w)[4],
 
 /// The eight vertices from b of a bone run whose K entries are `e`; lanes
 /// [lo, hi) stored.
-template <int K>
+template <int K, bool NormalsFromPositions>
 M3G_AVX2_INLINE void skinBoneBlock(const SkinningJob& j, const BlockContext& c, const float* const (&e)[4],
                                    std::size_t b, std::size_t lo, std::size_t hi) noexcept {
     __m256 px, py, pz, nx, ny, nz;
@@ -741,19 +741,28 @@ M3G_AVX2_INLINE void skinBoneBlock(const SkinningJob& j, const BlockContext& c, 
             w[k] = _mm256_setr_ps(s[0], s[t], s[2 * t], s[3 * t], s[4 * t], s[5 * t], s[6 * t], s[7 * t]);
         }
     }
+    // With a conformal palette (SkinningJob::normalsFromPositions) the
+    // position rows' 3x3 also turns the normal: three rows blended, not six.
     __m256 c0, c1, c2, c3;
+    __m256 x, y, z, bx, by, bz;
     blendRow8<K>(e, w, 0, c0, c1, c2, c3);
-    const __m256 x = _mm256_fmadd_ps(c2, pz, _mm256_fmadd_ps(c1, py, _mm256_fmadd_ps(c0, px, c3)));
+    x = _mm256_fmadd_ps(c2, pz, _mm256_fmadd_ps(c1, py, _mm256_fmadd_ps(c0, px, c3)));
+    if constexpr (NormalsFromPositions) bx = _mm256_fmadd_ps(c2, nz, _mm256_fmadd_ps(c1, ny, _mm256_mul_ps(c0, nx)));
     blendRow8<K>(e, w, 1, c0, c1, c2, c3);
-    const __m256 y = _mm256_fmadd_ps(c2, pz, _mm256_fmadd_ps(c1, py, _mm256_fmadd_ps(c0, px, c3)));
+    y = _mm256_fmadd_ps(c2, pz, _mm256_fmadd_ps(c1, py, _mm256_fmadd_ps(c0, px, c3)));
+    if constexpr (NormalsFromPositions) by = _mm256_fmadd_ps(c2, nz, _mm256_fmadd_ps(c1, ny, _mm256_mul_ps(c0, nx)));
     blendRow8<K>(e, w, 2, c0, c1, c2, c3);
-    const __m256 z = _mm256_fmadd_ps(c2, pz, _mm256_fmadd_ps(c1, py, _mm256_fmadd_ps(c0, px, c3)));
-    blendRow8<K>(e, w, 3, c0, c1, c2, c3);
-    const __m256 bx = _mm256_fmadd_ps(c2, nz, _mm256_fmadd_ps(c1, ny, _mm256_mul_ps(c0, nx)));
-    blendRow8<K>(e, w, 4, c0, c1, c2, c3);
-    const __m256 by = _mm256_fmadd_ps(c2, nz, _mm256_fmadd_ps(c1, ny, _mm256_mul_ps(c0, nx)));
-    blendRow8<K>(e, w, 5, c0, c1, c2, c3);
-    const __m256 bz = _mm256_fmadd_ps(c2, nz, _mm256_fmadd_ps(c1, ny, _mm256_mul_ps(c0, nx)));
+    z = _mm256_fmadd_ps(c2, pz, _mm256_fmadd_ps(c1, py, _mm256_fmadd_ps(c0, px, c3)));
+    if constexpr (NormalsFromPositions) {
+        bz = _mm256_fmadd_ps(c2, nz, _mm256_fmadd_ps(c1, ny, _mm256_mul_ps(c0, nx)));
+    } else {
+        blendRow8<K>(e, w, 3, c0, c1, c2, c3);
+        bx = _mm256_fmadd_ps(c2, nz, _mm256_fmadd_ps(c1, ny, _mm256_mul_ps(c0, nx)));
+        blendRow8<K>(e, w, 4, c0, c1, c2, c3);
+        by = _mm256_fmadd_ps(c2, nz, _mm256_fmadd_ps(c1, ny, _mm256_mul_ps(c0, nx)));
+        blendRow8<K>(e, w, 5, c0, c1, c2, c3);
+        bz = _mm256_fmadd_ps(c2, nz, _mm256_fmadd_ps(c1, ny, _mm256_mul_ps(c0, nx)));
+    }
     const __m256 inv = inverseLength(bx, by, bz);
     const __m256 ox = _mm256_mul_ps(bx, inv), oy = _mm256_mul_ps(by, inv), oz = _mm256_mul_ps(bz, inv);
     float* outP = j.outPositions.data() + 3 * b;
@@ -767,7 +776,7 @@ M3G_AVX2_INLINE void skinBoneBlock(const SkinningJob& j, const BlockContext& c, 
     }
 }
 
-template <int K>
+template <int K, bool NormalsFromPositions>
 M3G_AVX2 void skinBoneRuns(const SkinningJob& j, std::size_t begin, std::size_t end) noexcept {
     const BlockContext c = blockContext(j);
     std::uint32_t tail[256];
@@ -796,7 +805,7 @@ M3G_AVX2 void skinBoneRuns(const SkinningJob& j, std::size_t begin, std::size_t 
         for (std::size_t b = runFirst + (first - runFirst) / 8 * 8; b < stop && b < wholeEnd; b += 8) {
             const std::size_t lo = first > b ? first - b : 0;
             const std::size_t hi = stop - b < 8 ? stop - b : 8;
-            skinBoneBlock<K>(j, c, e, b, lo, hi);
+            skinBoneBlock<K, NormalsFromPositions>(j, c, e, b, lo, hi);
         }
         for (std::size_t v = first > wholeEnd ? first : wholeEnd; v < stop; ++v) {
             tail[tailCount++] = static_cast<std::uint32_t>(v);
@@ -804,6 +813,14 @@ M3G_AVX2 void skinBoneRuns(const SkinningJob& j, std::size_t begin, std::size_t 
         }
     }
     flushTail();
+}
+
+template <int K>
+M3G_AVX2_INLINE void boneRuns(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept {
+    if (job.normalsFromPositions)
+        skinBoneRuns<K, true>(job, begin, end);
+    else
+        skinBoneRuns<K, false>(job, begin, end);
 }
 
 template <bool Normals>
@@ -861,10 +878,10 @@ M3G_AVX2 bool skinBoneRunsAvx2(const SkinningJob& job, std::size_t begin, std::s
     if (job.inNormals.empty()) return false;
     if (!isPacked(job)) return false;
     switch (job.influenceCount) {
-        case 1: skinBoneRuns<1>(job, begin, end); return true;
-        case 2: skinBoneRuns<2>(job, begin, end); return true;
-        case 3: skinBoneRuns<3>(job, begin, end); return true;
-        case 4: skinBoneRuns<4>(job, begin, end); return true;
+        case 1: boneRuns<1>(job, begin, end); return true;
+        case 2: boneRuns<2>(job, begin, end); return true;
+        case 3: boneRuns<3>(job, begin, end); return true;
+        case 4: boneRuns<4>(job, begin, end); return true;
         default: return false;  // 0, or more than four slots: the list path
     }
 }

@@ -139,7 +139,9 @@ M3G_AVX512 void skinRuns16(const SkinningJob& j, std::size_t begin, std::size_t 
 // applied at once (a row's four coefficients live only while it is used);
 // then the normal is renormalised. The per-vertex list kernel blends each
 // vertex's entries as three 256-bit rows and needs a horizontal reduction
-// per vertex; here the work is all vertical.
+// per vertex; here the work is all vertical. With a conformal palette
+// (SkinningJob::normalsFromPositions) the normal goes through the blended
+// position rows: 12 coefficients blended per slot instead of 21.
 
 /// 4l for lanes 0-7 and 4(l - 8) for lanes 8-15: slot 0 of each lane in a
 /// pair of registers of four-slot weights (skinBoneBlock adds the slot).
@@ -167,7 +169,7 @@ M3G_AVX512_INLINE void blendRow16(const float* const (&e)[4], const __m512 (&w)[
 
 /// Vertices [v, v + lanes) of a bone run (lanes 1..16) whose K entries are
 /// `e` (K <= 4 here; the generic count goes vertex by vertex).
-template <int K>
+template <int K, bool NormalsFromPositions>
 M3G_AVX512_INLINE void skinBoneBlock(const SkinningJob& j, const float* const (&e)[4], std::size_t v,
                                      std::size_t lanes) noexcept {
     const auto stride = static_cast<std::size_t>(j.influenceStride);
@@ -221,19 +223,28 @@ M3G_AVX512_INLINE void skinBoneBlock(const SkinningJob& j, const float* const (&
             w[k] = _mm512_mask_i32gather_ps(_mm512_setzero_ps(), mask, _mm512_add_epi32(lane, _mm512_set1_epi32(k)),
                                             weights, 4);
     }
+    // With a conformal palette (SkinningJob::normalsFromPositions) the
+    // position rows' 3x3 also turns the normal: three rows blended, not six.
     __m512 c0, c1, c2, c3;
+    __m512 x, y, z, bx, by, bz;
     blendRow16<K>(e, w, K, 0, c0, c1, c2, c3);
-    const __m512 x = _mm512_fmadd_ps(c2, pz, _mm512_fmadd_ps(c1, py, _mm512_fmadd_ps(c0, px, c3)));
+    x = _mm512_fmadd_ps(c2, pz, _mm512_fmadd_ps(c1, py, _mm512_fmadd_ps(c0, px, c3)));
+    if constexpr (NormalsFromPositions) bx = _mm512_fmadd_ps(c2, nz, _mm512_fmadd_ps(c1, ny, _mm512_mul_ps(c0, nx)));
     blendRow16<K>(e, w, K, 1, c0, c1, c2, c3);
-    const __m512 y = _mm512_fmadd_ps(c2, pz, _mm512_fmadd_ps(c1, py, _mm512_fmadd_ps(c0, px, c3)));
+    y = _mm512_fmadd_ps(c2, pz, _mm512_fmadd_ps(c1, py, _mm512_fmadd_ps(c0, px, c3)));
+    if constexpr (NormalsFromPositions) by = _mm512_fmadd_ps(c2, nz, _mm512_fmadd_ps(c1, ny, _mm512_mul_ps(c0, nx)));
     blendRow16<K>(e, w, K, 2, c0, c1, c2, c3);
-    const __m512 z = _mm512_fmadd_ps(c2, pz, _mm512_fmadd_ps(c1, py, _mm512_fmadd_ps(c0, px, c3)));
-    blendRow16<K>(e, w, K, 3, c0, c1, c2, c3);
-    const __m512 bx = _mm512_fmadd_ps(c2, nz, _mm512_fmadd_ps(c1, ny, _mm512_mul_ps(c0, nx)));
-    blendRow16<K>(e, w, K, 4, c0, c1, c2, c3);
-    const __m512 by = _mm512_fmadd_ps(c2, nz, _mm512_fmadd_ps(c1, ny, _mm512_mul_ps(c0, nx)));
-    blendRow16<K>(e, w, K, 5, c0, c1, c2, c3);
-    const __m512 bz = _mm512_fmadd_ps(c2, nz, _mm512_fmadd_ps(c1, ny, _mm512_mul_ps(c0, nx)));
+    z = _mm512_fmadd_ps(c2, pz, _mm512_fmadd_ps(c1, py, _mm512_fmadd_ps(c0, px, c3)));
+    if constexpr (NormalsFromPositions) {
+        bz = _mm512_fmadd_ps(c2, nz, _mm512_fmadd_ps(c1, ny, _mm512_mul_ps(c0, nx)));
+    } else {
+        blendRow16<K>(e, w, K, 3, c0, c1, c2, c3);
+        bx = _mm512_fmadd_ps(c2, nz, _mm512_fmadd_ps(c1, ny, _mm512_mul_ps(c0, nx)));
+        blendRow16<K>(e, w, K, 4, c0, c1, c2, c3);
+        by = _mm512_fmadd_ps(c2, nz, _mm512_fmadd_ps(c1, ny, _mm512_mul_ps(c0, nx)));
+        blendRow16<K>(e, w, K, 5, c0, c1, c2, c3);
+        bz = _mm512_fmadd_ps(c2, nz, _mm512_fmadd_ps(c1, ny, _mm512_mul_ps(c0, nx)));
+    }
     const __m512 inv = inverseLength16(bx, by, bz);
     const __m512 ox = _mm512_mul_ps(bx, inv), oy = _mm512_mul_ps(by, inv), oz = _mm512_mul_ps(bz, inv);
     if (lanes == 16) {
@@ -245,7 +256,7 @@ M3G_AVX512_INLINE void skinBoneBlock(const SkinningJob& j, const float* const (&
     }
 }
 
-template <int K>
+template <int K, bool NormalsFromPositions>
 M3G_AVX512 void skinBoneRuns16(const SkinningJob& j, std::size_t begin, std::size_t end) noexcept {
     const auto stride = static_cast<std::size_t>(j.influenceStride);
     RunPieces pieces(j.boneRuns, begin, end);
@@ -259,8 +270,16 @@ M3G_AVX512 void skinBoneRuns16(const SkinningJob& j, std::size_t begin, std::siz
             continue;
         }
         for (std::size_t v = first, stop = first + count; v < stop; v += 16)
-            skinBoneBlock<K>(j, e, v, stop - v < 16 ? stop - v : 16);
+            skinBoneBlock<K, NormalsFromPositions>(j, e, v, stop - v < 16 ? stop - v : 16);
     }
+}
+
+template <int K>
+M3G_AVX512_INLINE void boneRuns16(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept {
+    if (job.normalsFromPositions)
+        skinBoneRuns16<K, true>(job, begin, end);
+    else
+        skinBoneRuns16<K, false>(job, begin, end);
 }
 
 }  // namespace
@@ -269,10 +288,10 @@ M3G_AVX512 bool skinBoneRunsAvx512(const SkinningJob& job, std::size_t begin, st
     if (job.inNormals.empty()) return false;
     if (!isPacked(job)) return false;
     switch (job.influenceCount) {
-        case 1: skinBoneRuns16<1>(job, begin, end); return true;
-        case 2: skinBoneRuns16<2>(job, begin, end); return true;
-        case 3: skinBoneRuns16<3>(job, begin, end); return true;
-        case 4: skinBoneRuns16<4>(job, begin, end); return true;
+        case 1: boneRuns16<1>(job, begin, end); return true;
+        case 2: boneRuns16<2>(job, begin, end); return true;
+        case 3: boneRuns16<3>(job, begin, end); return true;
+        case 4: boneRuns16<4>(job, begin, end); return true;
         default: return false;  // 0, or more than four slots: the list path
     }
 }

@@ -170,4 +170,14 @@ inline std::array<float, 16> randomAffine(std::mt19937& rng, bool nonUniform = t
     return m;
 }
 
+/// A random rotation (random axis and angle) times `scale`, plus a random
+/// translation: randomAffine's uniform case brought to the given scale.
+inline std::array<float, 16> randomScaledRotation(std::mt19937& rng, float scale) {
+    std::array<float, 16> m = randomAffine(rng, false);
+    const float k = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) m[static_cast<std::size_t>(r * 4 + c)] *= scale / k;
+    return m;
+}
+
 }  // namespace m3gtest

@@ -221,3 +221,76 @@ TEST(SkinPalette, PositionScaleAndBiasFoldIntoThePositionRows) {
         expectRows(out[1].normal, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}, "second normal");
     }
 }
+
+namespace {
+
+/// PaletteJob::conformal for `boneToMesh` (at rest: `atRest`, the same
+/// matrix for every bone) on `isa`, with the given position scale.
+bool conformalOn(Isa isa, const std::vector<Mat>& boneToMesh, const Mat& atRest, float positionScale) {
+    std::vector<float> a, r;
+    for (const Mat& m : boneToMesh) {
+        a.insert(a.end(), m.begin(), m.end());
+        r.insert(r.end(), atRest.begin(), atRest.end());
+    }
+    std::vector<PaletteEntry> out(boneToMesh.size());
+    PaletteJob job = paletteJob(out.size(), a, r, out);
+    job.isa = isa;
+    job.positionScale = positionScale;
+    job.positionBias = {0.5f, -1.0f, 2.0f};
+    // Run from either starting value: run() writes the answer both ways.
+    bool fromTrue = true, fromFalse = false;
+    job.conformal = &fromTrue;
+    EXPECT_TRUE(job.run());
+    job.conformal = &fromFalse;
+    EXPECT_TRUE(job.run());
+    EXPECT_EQ(fromTrue, fromFalse);
+    return fromFalse;
+}
+
+}  // namespace
+
+// PaletteJob::conformal on every code path: bones that rotate (or reflect)
+// and translate with one common scale, at rest a scaled rotation too, are
+// conformal with any positive position scale; a bone scaled non-uniformly
+// by 0.1 %, one scaled unlike the others by 0.1 %, a negative position
+// scale, a bone flattened to a plane or holding a NaN are not; 1e-6 of
+// non-uniformity (below the 2^-15 tolerance on s^2) still is. 37 bones, an
+// odd count: the AVX2 path's last bone alone must count.
+TEST(SkinPalette, ConformalReportsRotationsWithOneCommonScale) {
+    for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2, Isa::Avx512}) {
+        if (!isaSupported(isa)) continue;
+        SCOPED_TRACE(m3g::skin::isaName(isa));
+        std::mt19937 rng(5);
+        std::vector<Mat> bones;
+        for (int b = 0; b < 37; ++b) bones.push_back(m3gtest::randomScaledRotation(rng, 1.5f));
+        // A reflection with the same scale: the inverse transpose is still
+        // the matrix over s^2.
+        for (int c = 0; c < 4; ++c) bones[3][static_cast<std::size_t>(4 + c)] *= -1.0f;
+        const Mat atRest = m3gtest::randomScaledRotation(rng, 0.8f);
+        EXPECT_TRUE(conformalOn(isa, bones, atRest, 1.0f));
+        EXPECT_TRUE(conformalOn(isa, bones, atRest, 0.25f));
+        EXPECT_TRUE(conformalOn(isa, bones, kIdentity, 1.0f));
+        EXPECT_FALSE(conformalOn(isa, bones, atRest, -0.25f)) << "negative position scale";
+
+        // Bone `b` changed by `edit`: the first, one inside, and the last
+        // (alone in the AVX2 path's last pair).
+        for (std::size_t b : {std::size_t{0}, std::size_t{20}, std::size_t{36}}) {
+            SCOPED_TRACE(::testing::Message() << "bone " << b);
+            auto with = [&](auto edit) {
+                std::vector<Mat> v = bones;
+                edit(v[b]);
+                return conformalOn(isa, v, atRest, 0.25f);
+            };
+            auto scaleColumn = [](Mat& m, int c, float k) {
+                for (int r = 0; r < 3; ++r) m[static_cast<std::size_t>(r * 4 + c)] *= k;
+            };
+            EXPECT_FALSE(with([&](Mat& m) { scaleColumn(m, 1, 1.001f); })) << "non-uniform scale";
+            EXPECT_TRUE(with([&](Mat& m) { scaleColumn(m, 1, 1.000001f); })) << "below the tolerance";
+            EXPECT_FALSE(with([&](Mat& m) {
+                for (int c = 0; c < 3; ++c) scaleColumn(m, c, 1.001f);
+            })) << "a scale unlike the others'";
+            EXPECT_FALSE(with([&](Mat& m) { scaleColumn(m, 2, 0.0f); })) << "flattened";
+            EXPECT_FALSE(with([&](Mat& m) { m[5] = std::nanf(""); })) << "NaN";
+        }
+    }
+}

@@ -332,8 +332,15 @@ TEST(SkinnedMeshDeform, RecomputesOnlyWhenAnInputChanged) {
     EXPECT_TRUE(d.update(*second.mesh));  // back to a deformed mesh
 }
 
-TEST(SkinnedMeshDeform, RandomRigAgreesWithReferenceAndPaperBaseline) {
-    std::mt19937 rng(2024);
+namespace {
+
+/// A random rig deformed by MeshDeformer against the double-precision
+/// reference and the founding paper's baseline. `rigid`: the skeleton's
+/// nodes rotate and translate only (PaletteJob::conformal holds, and the
+/// bone runs turn normals with the position rows); else every node is
+/// scaled non-uniformly too.
+void checkRandomRig(std::uint32_t seed, bool rigid) {
+    std::mt19937 rng(seed);
     const int n = 600;
     // Skeleton: a random tree of 24 groups with random transforms (rotation,
     // non-uniform scale, translation) at rest.
@@ -352,7 +359,7 @@ TEST(SkinnedMeshDeform, RandomRigAgreesWithReferenceAndPaperBaseline) {
     auto randomPose = [&](Group* g) {
         g->setTranslation(2 * u(rng), 2 * u(rng), 2 * u(rng));
         g->setOrientation(180 * u(rng), u(rng), u(rng), u(rng) + 0.01f);
-        g->setScale(s(rng), s(rng), s(rng));
+        if (!rigid) g->setScale(s(rng), s(rng), s(rng));
     };
     for (int i = 0; i < 24; ++i) {
         Ref<Group> g = new Group();
@@ -362,16 +369,42 @@ TEST(SkinnedMeshDeform, RandomRigAgreesWithReferenceAndPaperBaseline) {
         nodes.push_back(g);
     }
     Ref<SkinnedMesh> mesh = new SkinnedMesh(vb, makeIB(n), nullptr, skeleton);
-    // 250 records, weights 1..5, ranges up to 30 vertices: 0 to ~10 bones a vertex.
+    // 250 records over the first 400 vertices, weights 1..5, ranges up to 30
+    // vertices: 0 to ~10 bones a vertex.
     std::vector<m3gtest::WeightedTransform> records;
-    std::uniform_int_distribution<int> node(1, 24), weight(1, 5), first(0, n - 1), len(1, 30);
+    std::uniform_int_distribution<int> node(1, 24), weight(1, 5), first(0, n - 201), len(1, 30);
     for (int i = 0; i < 250; ++i) {
         Group* bone = nodes[static_cast<std::size_t>(node(rng))];
-        const int f = first(rng), c = std::min(len(rng), n - f), w = weight(rng);
+        const int f = first(rng), c = std::min(len(rng), n - 200 - f), w = weight(rng);
         mesh->addTransform(bone, w, f, c);
         records.push_back({mesh->boneIndex(bone), w, f, c});
     }
+    // And the last 200 vertices in stretches of 20 that share two or three
+    // bones, each vertex with weights of its own (a blend along a limb:
+    // the compact space's bone runs).
+    std::uniform_int_distribution<int> three(2, 3);
+    for (int f = n - 200; f < n; f += 20) {
+        Group* stretch[3];
+        for (Group*& g : stretch) g = nodes[static_cast<std::size_t>(node(rng))];
+        const int k = three(rng);
+        for (int v = f; v < f + 20; ++v)
+            for (int b = 0; b < k; ++b) {
+                // Two records of one bone add up; a repeated bone is fine.
+                const int w = weight(rng);
+                mesh->addTransform(stretch[b], w, v, 1);
+                records.push_back({mesh->boneIndex(stretch[b]), w, v, 1});
+            }
+    }
     for (std::size_t i = 1; i < nodes.size(); ++i) randomPose(nodes[i]);  // a new pose
+    // Vertices sharing their bones with their own weights (bone runs), the
+    // kernels normalsFromPositions changes.
+    skin::InfluencePartition part;
+    part.build(mesh->influenceTable().bones(), mesh->influenceTable().weights(), mesh->influenceTable().maxInfluences(),
+               static_cast<std::size_t>(n), skin::InfluencePartition::kNoInPlaceRuns);
+    std::size_t boneRunVertices = 0;
+    for (int c = 1; c <= part.maxInfluences(); ++c)
+        for (const auto& run : part.compactBoneRuns(c)) boneRunVertices += run.vertexCount;
+    EXPECT_GT(boneRunVertices, 100u);
     MeshDeformer d;
     ASSERT_TRUE(d.update(*mesh));
 
@@ -400,6 +433,17 @@ TEST(SkinnedMeshDeform, RandomRigAgreesWithReferenceAndPaperBaseline) {
     baseline.deform(records, static_cast<std::size_t>(mesh->boneCount()), toMesh, rest, n, pf, nf, bp, bn);
     EXPECT_TRUE(m3gtest::closeXyz(positionsInMeshOrder(d), bp));
     EXPECT_TRUE(m3gtest::closeXyz(normalsInMeshOrder(d), bn));
+}
+
+}  // namespace
+
+TEST(SkinnedMeshDeform, RandomRigAgreesWithReferenceAndPaperBaseline) { checkRandomRig(2024, false); }
+
+// Bones that only rotate and translate: the palette is conformal and the
+// bone runs' normals come from the position rows, still the reference's.
+TEST(SkinnedMeshDeform, RigidRigAgreesWithReferenceAndPaperBaseline) {
+    checkRandomRig(2024, true);
+    checkRandomRig(7, true);
 }
 
 TEST(SkinnedMeshDeform, LargeMeshTakesTheParallelPath) {

@@ -41,6 +41,10 @@ static_assert(sizeof(PaletteEntry) == 96, "PaletteEntry must match the std430 la
 /// time, SSE2 one bone at a time), within a few units in the last place of
 /// the double result for well-conditioned bones: the palette is most of a
 /// small mesh's frame.
+/// Relative tolerance of PaletteJob::conformal: 2^-15, below the resolution
+/// of a 16-bit normal component (1 / 32767), the finest a VertexArray holds.
+inline constexpr float kConformalTolerance = 1.0f / 32768.0f;
+
 struct PaletteJob {
     /// Number of entries to compute.
     std::size_t boneCount = 0;
@@ -60,6 +64,20 @@ struct PaletteJob {
     /// Which code path runs (Scalar, Sse2 or Avx2); an
     /// unsupported one makes validate() false.
     Isa isa = Isa::Auto;
+    /// Optional output: when set, run() stores whether the palette is
+    /// conformal: every bone's 3x3 (bone -> mesh now) x (at rest) a
+    /// rotation, or a reflection, times one scale s common to all bones (rows
+    /// orthogonal and of squared length s^2, to within kConformalTolerance
+    /// of s^2), and the position scale positive. Each entry's normal 3x3 (the
+    /// inverse transpose) is then its position 3x3 over s^2 times the
+    /// position scale, one positive multiple for all entries, so that a
+    /// blend of normal rows is that multiple of the same blend of position
+    /// rows: renormalised, the normal comes out the same
+    /// (SkinningJob::normalsFromPositions). What bones that only rotate and
+    /// translate (the usual skeleton) give; a bone scaled non-uniformly, or
+    /// unlike the others, does not; nor does a singular or non-finite one.
+    /// A few operations per bone.
+    bool* conformal = nullptr;
 
     /// True if the spans are large enough: 16 * boneCount floats each and
     /// boneCount entries, and the ISA is supported. (Non-finite elements are not rejected: they give

@@ -68,6 +68,15 @@ struct SkinningJob {
     /// Weight per slot, already normalised (the kernel does not divide).
     std::span<const float> boneWeights;
     std::span<const PaletteEntry> palette;
+    /// The caller's word that the palette is conformal (PaletteJob::conformal:
+    /// every bone a rotation times one common scale). The bone-run kernels
+    /// (AVX-512, AVX2) then blend each lane's position rows only and take
+    /// the normal through their 3x3, renormalised, so the common multiple
+    /// cancels: half the per-lane blend, normals within kConformalTolerance
+    /// of the normal rows' result, positions the same bits. Other paths
+    /// ignore it. Set for a palette that is not conformal, normals come out
+    /// wrong (finite, nothing read or written out of bounds).
+    bool normalsFromPositions = false;
 
     /// Applied to the input positions before skinning (VertexBuffer's
     /// position scale and bias). Faster left at 1 and 0 with the palette
