@@ -30,6 +30,10 @@ struct alignas(16) PaletteEntry {
 };
 static_assert(sizeof(PaletteEntry) == 96, "PaletteEntry must match the std430 layout");
 
+/// Relative tolerance of PaletteJob::conformal: 2^-15, below the resolution
+/// of a 16-bit normal component (1 / 32767), the finest a VertexArray holds.
+inline constexpr float kConformalTolerance = 1.0f / 32768.0f;
+
 /// Computes palette entries from per-bone matrices. Owns no memory.
 ///
 /// Both inputs are 4x4 matrices in M3G's Transform order (row-major, element
@@ -41,10 +45,6 @@ static_assert(sizeof(PaletteEntry) == 96, "PaletteEntry must match the std430 la
 /// time, SSE2 one bone at a time), within a few units in the last place of
 /// the double result for well-conditioned bones: the palette is most of a
 /// small mesh's frame.
-/// Relative tolerance of PaletteJob::conformal: 2^-15, below the resolution
-/// of a 16-bit normal component (1 / 32767), the finest a VertexArray holds.
-inline constexpr float kConformalTolerance = 1.0f / 32768.0f;
-
 struct PaletteJob {
     /// Number of entries to compute.
     std::size_t boneCount = 0;
