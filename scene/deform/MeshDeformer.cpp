@@ -273,7 +273,8 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
     // bone-run kernels may turn normals with the position rows (half their
     // per-lane blend). Measured only where there are bone runs.
     bool conformal = false;
-    if (boneRuns_) paletteJob.conformal = &conformal;
+    if (std::any_of(groups_.begin(), groups_.end(), [](const GroupPlan& g) { return !g.boneRuns.empty(); }))
+        paletteJob.conformal = &conformal;
     require(paletteJob.run(), "palette job");
     // Which entries changed, bit for bit (only the bones composed again can
     // have: an entry is a function of its bone's matrix, the at-rest matrix,
@@ -392,7 +393,6 @@ void MeshDeformer::planOrder(std::size_t n) {
 
 void MeshDeformer::planGroups() {
     groups_.clear();
-    boneRuns_ = false;
     for (int c = 0; c <= partition_.maxInfluences(); ++c) {
         const auto group = partition_.group(c);
         if (group.empty()) continue;
@@ -406,7 +406,6 @@ void MeshDeformer::planGroups() {
         g.vertices = partition_.compactLoose(c);
         g.runs = partition_.compactRuns(c);
         g.boneRuns = partition_.compactBoneRuns(c);
-        boneRuns_ |= !g.boneRuns.empty();
     }
 }
 

@@ -188,7 +188,6 @@ private:
     bool ordered_ = false;
     std::vector<float> orderedPositions_, orderedNormals_;
     std::vector<GroupPlan> groups_;    // the non-empty groups, ascending count
-    bool boneRuns_ = false;            // whether a group has bone runs
     BoneTransforms boneTransforms_;
     std::vector<float> boneMatrices_;  // 16 per bone: bone -> mesh now
     std::vector<float> atRest_;        // 16 per bone

@@ -370,20 +370,13 @@ TEST(SkinningJob, BoneRunsTurnNormalsWithThePositionRowsOfAConformalPalette) {
         pos.assign(order.size() * 3, -777.0f);
         nrm.assign(order.size() * 3, -777.0f);
         for (int c = 1; c <= part.maxInfluences(); ++c) {
-            SkinningJob job;
-            job.boneRuns = part.compactBoneRuns(c);
-            job.vertexCount = order.size();
-            job.influenceCount = c;
-            job.influenceStride = m.n;
+            SkinningJob job = m3gtest::arraysJob({}, {}, order.size(), c, m.n, m.bones, m.weights, pal, cp, cn, pos,
+                                                 nrm, isa);
+            // The compact arrays in place of the mesh's, and only the bone runs.
             job.boneIndices = part.compactBones();
             job.boneWeights = part.compactWeights();
-            job.palette = pal;
+            job.boneRuns = part.compactBoneRuns(c);
             job.normalsFromPositions = flag;
-            job.inPositions = cp;
-            job.inNormals = cn;
-            job.outPositions = pos;
-            job.outNormals = nrm;
-            job.isa = isa;
             ASSERT_TRUE(job.run());
         }
     };
