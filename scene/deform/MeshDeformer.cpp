@@ -22,6 +22,7 @@
 #include <m3g/MorphingMesh.h>
 #include <m3g/SkinnedMesh.h>
 #include <m3g/skin/InfluenceTable.h>
+#include <m3g/skin/Isa.h>
 #include <m3g/VertexArray.h>
 #include <m3g/VertexBuffer.h>
 #include <m3g/skin/Morph.h>
@@ -95,6 +96,13 @@ void requireSameArrays(const VertexBuffer& base, const VertexBuffer& target, int
 /// The kernels only fail on malformed input, which update() never builds.
 void require(bool ok, const char* what) {
     if (!ok) throw IllegalStateException(str("MeshDeformer: internal error, invalid ", what));
+}
+
+/// `n` packed xyz triples as three planes: every x, then every y, then every z.
+void toPlanes(std::span<const float> xyz, std::size_t n, std::vector<float>& out) {
+    out.resize(3 * n);
+    for (std::size_t v = 0; v < n; ++v)
+        for (std::size_t c = 0; c < 3; ++c) out[c * n + v] = xyz[3 * v + c];
 }
 
 /// The runs of `runs` with a slot whose bone's palette entry changed (a bone
@@ -352,6 +360,8 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         job.outPositions = out_.positions;
         job.inNormals = inNormals;
         job.outNormals = out_.normals;
+        job.inPositionPlanes = positionPlanes_;
+        job.inNormalPlanes = normalPlanes_;
         require(g.parallel ? job.runParallel(skin::ThreadPool::shared(), kGrain) : job.run(), "skinning job");
     }
     finish();
@@ -388,6 +398,15 @@ void MeshDeformer::planOrder(std::size_t n) {
     if (ordered_) {
         out_.inSlotOrder(rawPositions_, 3, orderedPositions_);
         out_.inSlotOrder(baseNormals_, 3, orderedNormals_);
+    }
+    // Planes only help the sixteen-lane kernels (AVX-512) on the CPU;
+    // elsewhere they would be memory for nothing.
+    positionPlanes_.clear();
+    normalPlanes_.clear();
+    if (output_ == Output::Vertices && baseNormals_.size() == 3 * n &&
+        skin::resolveIsa(skin::Isa::Auto) == skin::Isa::Avx512) {
+        toPlanes(ordered_ ? orderedPositions_ : rawPositions_, n, positionPlanes_);
+        toPlanes(ordered_ ? orderedNormals_ : baseNormals_, n, normalPlanes_);
     }
 }
 

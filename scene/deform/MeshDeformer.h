@@ -144,7 +144,8 @@ private:
 
     bool updateSkinned(const SkinnedMesh& mesh);
     /// The output order (order_, location_) of a partition of `n`
-    /// vertices, and the inputs gathered into it.
+    /// vertices, and the inputs gathered into it (as packed triples, and as
+    /// planes where the kernels read them).
     void planOrder(std::size_t n);
     /// Lists groups_ from partition_ (after a change of the table or inputs).
     void planGroups();
@@ -187,6 +188,10 @@ private:
     std::vector<std::uint32_t> unboned_;  // output slots of the vertices without bones
     bool ordered_ = false;
     std::vector<float> orderedPositions_, orderedNormals_;
+    // The inputs in output order again as planes (x, y, z), for the
+    // sixteen-lane kernels (SkinningJob::inPositionPlanes): made with the
+    // order, only where those kernels run and the mesh has normals.
+    std::vector<float> positionPlanes_, normalPlanes_;
     std::vector<GroupPlan> groups_;    // the non-empty groups, ascending count
     BoneTransforms boneTransforms_;
     std::vector<float> boneMatrices_;  // 16 per bone: bone -> mesh now

@@ -60,6 +60,11 @@ bool check(const SkinningJob& j, std::size_t* runVertices, std::size_t* boneRunV
     if (!j.inNormals.empty() && (!holds(j.inNormals, j.vertexCount, j.inNormalStride) ||
                                  !holds(std::span<const float>(j.outNormals), j.vertexCount, j.outNormalStride)))
         return false;
+    // Planes given hold every vertex (the kernels read them up to
+    // vertexCount, lanes of a block at once).
+    const std::size_t planeFloats = 3 * j.vertexCount;
+    if (!j.inPositionPlanes.empty() && j.inPositionPlanes.size() < planeFloats) return false;
+    if (!j.inNormalPlanes.empty() && (j.inNormals.empty() || j.inNormalPlanes.size() < planeFloats)) return false;
     // Every vertex must be below `limit`: the vertex count, and the number
     // of vertices the influence arrays reach.
     std::size_t limit = j.vertexCount;

@@ -8,7 +8,9 @@
 // vertex is vertical: FMAs on rows shared by the run, or blended per lane
 // from the run's palette entries, which double in width with no extra
 // shuffling. Sixteen packed xyz triples are three 512-bit loads and six
-// two-source permutes (Avx512.h), and the last, partial block of a run is a
+// two-source permutes (Avx512.h), or three loads where the job also gives
+// its inputs as planes (SkinningJob::inPositionPlanes; the outputs are
+// triples either way), and the last, partial block of a run is a
 // masked load and store of exactly its vertices (no read past the arrays,
 // no lane written outside the run).
 #include "Kernels.h"
@@ -20,6 +22,60 @@
 namespace m3g::skin::detail {
 
 namespace {
+
+/// Where the sixteen-lane blocks read their inputs: the packed xyz triples,
+/// transposed per block (three loads and six permutes each for positions
+/// and normals), or the job's planes (SkinningJob::inPositionPlanes: three
+/// loads). The same values either way, so the same output bits.
+template <bool Planes>
+struct Inputs16 {
+    const float* p;
+    const float* n;
+    std::size_t plane;  // floats from one plane to the next (vertexCount)
+
+    explicit Inputs16(const SkinningJob& j) noexcept
+        : p(Planes ? j.inPositionPlanes.data() : j.inPositions.data()),
+          n(Planes ? j.inNormalPlanes.data() : j.inNormals.data()),
+          plane(j.vertexCount) {}
+
+    /// Vertices v .. v + 15.
+    M3G_AVX512_INLINE void load(std::size_t v, __m512& px, __m512& py, __m512& pz, __m512& nx, __m512& ny,
+                                __m512& nz) const noexcept {
+        if constexpr (Planes) {
+            px = _mm512_loadu_ps(p + v);
+            py = _mm512_loadu_ps(p + plane + v);
+            pz = _mm512_loadu_ps(p + 2 * plane + v);
+            nx = _mm512_loadu_ps(n + v);
+            ny = _mm512_loadu_ps(n + plane + v);
+            nz = _mm512_loadu_ps(n + 2 * plane + v);
+        } else {
+            loadSoa3x16(p + 3 * v, px, py, pz);
+            loadSoa3x16(n + 3 * v, nx, ny, nz);
+        }
+    }
+    /// Vertices v .. v + lanes - 1 (lanes < 16); only they are read, the
+    /// other lanes are 0.
+    M3G_AVX512_INLINE void load(std::size_t v, std::size_t lanes, __m512& px, __m512& py, __m512& pz, __m512& nx,
+                                __m512& ny, __m512& nz) const noexcept {
+        if constexpr (Planes) {
+            const auto m = static_cast<__mmask16>((1u << lanes) - 1u);
+            px = _mm512_maskz_loadu_ps(m, p + v);
+            py = _mm512_maskz_loadu_ps(m, p + plane + v);
+            pz = _mm512_maskz_loadu_ps(m, p + 2 * plane + v);
+            nx = _mm512_maskz_loadu_ps(m, n + v);
+            ny = _mm512_maskz_loadu_ps(m, n + plane + v);
+            nz = _mm512_maskz_loadu_ps(m, n + 2 * plane + v);
+        } else {
+            loadSoa3x16(p + 3 * v, lanes, px, py, pz);
+            loadSoa3x16(n + 3 * v, lanes, nx, ny, nz);
+        }
+    }
+};
+
+/// True when a packed job's planes can be read (SkinningJob::inPositionPlanes).
+inline bool hasPlanes(const SkinningJob& j) noexcept {
+    return !j.inPositionPlanes.empty() && !j.inNormalPlanes.empty();
+}
 
 /// Rows of a run: its K palette entries blended (P0 P1 P2 N0 N1 N2, four
 /// floats each, as PaletteEntry), the job's position scale and bias folded
@@ -80,6 +136,7 @@ M3G_AVX512_INLINE Skinned16 applyRows16(const Rows& m, __m512 px, __m512 py, __m
 
 /// Vertices [v, v + count) of a run with packed arrays: whole blocks of
 /// sixteen with plain loads and stores, the rest with masked ones.
+template <bool Planes>
 M3G_AVX512_INLINE void applyRows(const SkinningJob& j, const float (&rows)[24], std::size_t v,
                                  std::size_t count) noexcept {
     // Coefficients as broadcast memory operands, read again each block:
@@ -89,15 +146,13 @@ M3G_AVX512_INLINE void applyRows(const SkinningJob& j, const float (&rows)[24], 
         const float* r;
         M3G_AVX512_INLINE __m512 operator[](int i) const noexcept { return _mm512_set1_ps(r[i]); }
     } m{rows};
-    const float* inP = j.inPositions.data();
-    const float* inN = j.inNormals.data();
+    const Inputs16<Planes> in(j);
     float* outP = j.outPositions.data();
     float* outN = j.outNormals.data();
     const std::size_t end = v + count;
     for (; v + 16 <= end; v += 16) {
         __m512 px, py, pz, nx, ny, nz;
-        loadSoa3x16(inP + 3 * v, px, py, pz);
-        loadSoa3x16(inN + 3 * v, nx, ny, nz);
+        in.load(v, px, py, pz, nx, ny, nz);
         const Skinned16 o = applyRows16(m, px, py, pz, nx, ny, nz);
         storeSoa3x16(outP + 3 * v, o.x, o.y, o.z);
         storeSoa3x16(outN + 3 * v, o.nx, o.ny, o.nz);
@@ -105,15 +160,14 @@ M3G_AVX512_INLINE void applyRows(const SkinningJob& j, const float (&rows)[24], 
     if (v < end) {
         const std::size_t lanes = end - v;
         __m512 px, py, pz, nx, ny, nz;
-        loadSoa3x16(inP + 3 * v, lanes, px, py, pz);
-        loadSoa3x16(inN + 3 * v, lanes, nx, ny, nz);
+        in.load(v, lanes, px, py, pz, nx, ny, nz);
         const Skinned16 o = applyRows16(m, px, py, pz, nx, ny, nz);
         storeSoa3x16(outP + 3 * v, lanes, o.x, o.y, o.z);
         storeSoa3x16(outN + 3 * v, lanes, o.nx, o.ny, o.nz);
     }
 }
 
-template <int K>
+template <int K, bool Planes>
 M3G_AVX512 void skinRuns16(const SkinningJob& j, std::size_t begin, std::size_t end) noexcept {
     const std::size_t stride = static_cast<std::size_t>(j.influenceStride);
     RunPieces pieces(j.runs, begin, end);
@@ -126,7 +180,7 @@ M3G_AVX512 void skinRuns16(const SkinningJob& j, std::size_t begin, std::size_t 
             for (std::size_t i = 0; i < count; ++i) skinVertexChecked(j, first + i);
             continue;
         }
-        applyRows(j, rows, first, count);
+        applyRows<Planes>(j, rows, first, count);
     }
 }
 
@@ -169,19 +223,16 @@ M3G_AVX512_INLINE void blendRow16(const float* const (&e)[4], const __m512 (&w)[
 
 /// Vertices [v, v + lanes) of a bone run (lanes 1..16) whose K entries are
 /// `e` (K <= 4 here; the generic count goes vertex by vertex).
-template <int K, bool NormalsFromPositions>
-M3G_AVX512_INLINE void skinBoneBlock(const SkinningJob& j, const float* const (&e)[4], std::size_t v,
-                                     std::size_t lanes) noexcept {
+template <int K, bool NormalsFromPositions, bool Planes>
+M3G_AVX512_INLINE void skinBoneBlock(const SkinningJob& j, const Inputs16<Planes>& in, const float* const (&e)[4],
+                                     std::size_t v, std::size_t lanes) noexcept {
     const auto stride = static_cast<std::size_t>(j.influenceStride);
     const __mmask16 mask = lanes >= 16 ? __mmask16(0xFFFF) : static_cast<__mmask16>((1u << lanes) - 1u);
     __m512 px, py, pz, nx, ny, nz;
-    if (lanes == 16) {
-        loadSoa3x16(j.inPositions.data() + 3 * v, px, py, pz);
-        loadSoa3x16(j.inNormals.data() + 3 * v, nx, ny, nz);
-    } else {
-        loadSoa3x16(j.inPositions.data() + 3 * v, lanes, px, py, pz);
-        loadSoa3x16(j.inNormals.data() + 3 * v, lanes, nx, ny, nz);
-    }
+    if (lanes == 16)
+        in.load(v, px, py, pz, nx, ny, nz);
+    else
+        in.load(v, lanes, px, py, pz, nx, ny, nz);
     if (!isIdentityScaleBias(j.positionScale, j.positionBias)) {
         const __m512 s = _mm512_set1_ps(j.positionScale);
         px = _mm512_fmadd_ps(px, s, _mm512_set1_ps(j.positionBias[0]));
@@ -256,9 +307,10 @@ M3G_AVX512_INLINE void skinBoneBlock(const SkinningJob& j, const float* const (&
     }
 }
 
-template <int K, bool NormalsFromPositions>
+template <int K, bool NormalsFromPositions, bool Planes>
 M3G_AVX512 void skinBoneRuns16(const SkinningJob& j, std::size_t begin, std::size_t end) noexcept {
     const auto stride = static_cast<std::size_t>(j.influenceStride);
+    const Inputs16<Planes> in(j);
     RunPieces pieces(j.boneRuns, begin, end);
     std::size_t runFirst, first, count;
     while (pieces.next(runFirst, first, count)) {
@@ -270,16 +322,28 @@ M3G_AVX512 void skinBoneRuns16(const SkinningJob& j, std::size_t begin, std::siz
             continue;
         }
         for (std::size_t v = first, stop = first + count; v < stop; v += 16)
-            skinBoneBlock<K, NormalsFromPositions>(j, e, v, stop - v < 16 ? stop - v : 16);
+            skinBoneBlock<K, NormalsFromPositions>(j, in, e, v, stop - v < 16 ? stop - v : 16);
     }
 }
 
 template <int K>
 M3G_AVX512_INLINE void boneRuns16(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept {
-    if (job.normalsFromPositions)
-        skinBoneRuns16<K, true>(job, begin, end);
+    const bool planes = hasPlanes(job);
+    if (job.normalsFromPositions) {
+        if (planes) skinBoneRuns16<K, true, true>(job, begin, end);
+        else skinBoneRuns16<K, true, false>(job, begin, end);
+    } else {
+        if (planes) skinBoneRuns16<K, false, true>(job, begin, end);
+        else skinBoneRuns16<K, false, false>(job, begin, end);
+    }
+}
+
+template <int K>
+M3G_AVX512_INLINE void runs16(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept {
+    if (hasPlanes(job))
+        skinRuns16<K, true>(job, begin, end);
     else
-        skinBoneRuns16<K, false>(job, begin, end);
+        skinRuns16<K, false>(job, begin, end);
 }
 
 }  // namespace
@@ -301,11 +365,11 @@ M3G_AVX512 bool skinRunsAvx512(const SkinningJob& job, std::size_t begin, std::s
     if (!isPacked(job)) return false;
     switch (job.influenceCount) {
         case 0: return false;
-        case 1: skinRuns16<1>(job, begin, end); return true;
-        case 2: skinRuns16<2>(job, begin, end); return true;
-        case 3: skinRuns16<3>(job, begin, end); return true;
-        case 4: skinRuns16<4>(job, begin, end); return true;
-        default: skinRuns16<-1>(job, begin, end); return true;
+        case 1: runs16<1>(job, begin, end); return true;
+        case 2: runs16<2>(job, begin, end); return true;
+        case 3: runs16<3>(job, begin, end); return true;
+        case 4: runs16<4>(job, begin, end); return true;
+        default: runs16<-1>(job, begin, end); return true;
     }
 }
 

@@ -409,6 +409,113 @@ TEST(SkinningJob, BoneRunsTurnNormalsWithThePositionRowsOfAConformalPalette) {
     }
 }
 
+// SkinningJob::inPositionPlanes / inNormalPlanes: the same inputs as x, y
+// and z planes. The sixteen-lane kernels (AVX-512) read them instead of
+// transposing triples; every path gives the same bits with them as
+// without (runs, bone runs with either normal method, loose vertices,
+// partial blocks, a position scale and bias applied per block). Control:
+// planes that differ from the triples in one vertex change that vertex
+// on AVX-512 only, so its kernels do read them and the others do not.
+TEST(SkinningJob, InputPlanesGiveTheSameBitsAsTriples) {
+    std::mt19937 rng(43);
+    std::vector<std::array<float, 16>> bonesToMesh;
+    for (int b = 0; b < 23; ++b) bonesToMesh.push_back(m3gtest::randomAffine(rng));
+    const std::vector<PaletteEntry> pal = m3gtest::paletteAtRestIdentity(bonesToMesh);
+    ShuffledMesh m(11, 2501, 23, false);  // an odd count: partial blocks at the arrays' end
+    InfluencePartition part;
+    part.build(m.bones, m.weights, m.n, m.vertices, InfluencePartition::kNoInPlaceRuns);
+    const std::size_t n = part.compactOrder().size();
+    std::uniform_real_distribution<float> u(-5.0f, 5.0f);
+    std::vector<float> cp(n * 3), cn(n * 3);
+    for (auto& x : cp) x = u(rng);
+    for (auto& x : cn) x = u(rng);
+    auto planesOf = [n](const std::vector<float>& xyz) {
+        std::vector<float> planes(3 * n);
+        for (std::size_t v = 0; v < n; ++v)
+            for (std::size_t c = 0; c < 3; ++c) planes[c * n + v] = xyz[3 * v + c];
+        return planes;
+    };
+    const std::vector<float> pp = planesOf(cp), np = planesOf(cn);
+    std::size_t runVertices = 0, boneRunVertices = 0;
+    for (int c = 1; c <= part.maxInfluences(); ++c) {
+        for (const InfluenceRun& r : part.compactRuns(c)) runVertices += r.vertexCount;
+        for (const InfluenceRun& r : part.compactBoneRuns(c)) boneRunVertices += r.vertexCount;
+    }
+    ASSERT_GT(runVertices, 500u);
+    ASSERT_GT(boneRunVertices, 300u);
+
+    // Every group's runs, bone runs and loose vertices; outputs start as a
+    // sentinel, so a vertex left out shows.
+    auto skin = [&](Isa isa, bool flag, bool scaled, std::span<const float> positionPlanes,
+                    std::span<const float> normalPlanes, std::vector<float>& pos, std::vector<float>& nrm) {
+        pos.assign(n * 3, -777.0f);
+        nrm.assign(n * 3, -777.0f);
+        for (int c = 1; c <= part.maxInfluences(); ++c) {
+            SkinningJob job = m3gtest::arraysJob(part.compactLoose(c), part.compactRuns(c), n, c, m.n, m.bones,
+                                                 m.weights, pal, cp, cn, pos, nrm, isa);
+            job.boneIndices = part.compactBones();
+            job.boneWeights = part.compactWeights();
+            job.boneRuns = part.compactBoneRuns(c);
+            job.normalsFromPositions = flag;
+            if (scaled) {
+                job.positionScale = 0.75f;
+                job.positionBias = {0.5f, -1.0f, 2.0f};
+            }
+            job.inPositionPlanes = positionPlanes;
+            job.inNormalPlanes = normalPlanes;
+            ASSERT_TRUE(job.run());
+        }
+    };
+    std::vector<float> altered = pp;
+    const std::size_t probe = part.compactRuns(1).empty() ? part.compactRuns(2)[0].firstVertex + 1
+                                                          : part.compactRuns(1)[0].firstVertex + 1;
+    altered[probe] += 1.0f;  // x of one run vertex
+    for (Isa isa : kIsas) {
+        if (!isaSupported(isa)) continue;
+        for (bool flag : {false, true})
+            for (bool scaled : {false, true}) {
+                SCOPED_TRACE(std::string(isaName(isa)) + (flag ? ", normals from positions" : "") +
+                             (scaled ? ", scale and bias" : ""));
+                std::vector<float> pos, nrm, ppos, pnrm;
+                skin(isa, flag, scaled, {}, {}, pos, nrm);
+                skin(isa, flag, scaled, pp, np, ppos, pnrm);
+                for (std::size_t i = 0; i < pos.size(); ++i) {
+                    ASSERT_NE(pos[i], -777.0f) << "float " << i;
+                    ASSERT_EQ(0, std::memcmp(&pos[i], &ppos[i], sizeof(float))) << "position float " << i;
+                    ASSERT_EQ(0, std::memcmp(&nrm[i], &pnrm[i], sizeof(float))) << "normal float " << i;
+                }
+                skin(isa, flag, scaled, altered, np, ppos, pnrm);
+                const bool read = std::memcmp(&pos[probe * 3], &ppos[probe * 3], 3 * sizeof(float)) != 0;
+                EXPECT_EQ(read, isa == Isa::Avx512) << "vertex " << probe;
+                for (std::size_t v = 0; v < n; ++v) {
+                    if (v == probe) continue;
+                    ASSERT_EQ(0, std::memcmp(&pos[v * 3], &ppos[v * 3], 3 * sizeof(float))) << v;
+                }
+            }
+    }
+
+    // validate(): planes hold every vertex; normal planes only with normals.
+    std::vector<float> pos(n * 3), nrm(n * 3);
+    SkinningJob job = m3gtest::arraysJob(part.compactLoose(1), part.compactRuns(1), n, 1, m.n, m.bones, m.weights,
+                                         pal, cp, cn, pos, nrm, Isa::Auto);
+    job.boneIndices = part.compactBones();
+    job.boneWeights = part.compactWeights();
+    job.inPositionPlanes = pp;
+    job.inNormalPlanes = np;
+    EXPECT_TRUE(job.validate());
+    job.inPositionPlanes = std::span<const float>(pp).first(3 * n - 1);
+    EXPECT_FALSE(job.validate()) << "position planes one float short";
+    job.inPositionPlanes = pp;
+    job.inNormalPlanes = std::span<const float>(np).first(3 * n - 1);
+    EXPECT_FALSE(job.validate()) << "normal planes one float short";
+    job.inNormalPlanes = np;
+    job.inNormals = {};
+    job.outNormals = {};
+    EXPECT_FALSE(job.validate()) << "normal planes without normals";
+    job.inNormalPlanes = {};
+    EXPECT_TRUE(job.validate()) << "position planes alone (not read: no normals)";
+}
+
 // scatterXyz writes three floats per listed vertex and nothing else.
 TEST(SkinningJob, ScatterXyzWritesOnlyTheListedTriples) {
     const std::vector<std::uint32_t> order{4, 0, 2};

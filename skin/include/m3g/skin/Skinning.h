@@ -97,6 +97,19 @@ struct SkinningJob {
     std::span<float> outNormals;
     std::size_t outNormalStride = 3;
 
+    /// Optional: the same input positions and normals once more as planes,
+    /// x of vertices 0 .. vertexCount-1, then their y, then their z
+    /// (3 * vertexCount floats each). Inputs are static while a mesh's
+    /// vertices are (MeshDeformer makes the planes when they change), so the
+    /// sixteen-lane kernels (Isa::Avx512: runs and bone runs) then read a
+    /// block's x, y and z with three loads instead of transposing its xyz
+    /// triples each frame; outputs are the same bits. Used only when both
+    /// are given (normals present) and the arrays are packed (strides 3);
+    /// every other path reads inPositions and inNormals. The contents must
+    /// be theirs: validate() checks sizes, not values.
+    std::span<const float> inPositionPlanes;
+    std::span<const float> inNormalPlanes;
+
     /// Which code path runs; an unsupported one makes validate() false.
     Isa isa = Isa::Auto;
 
@@ -106,7 +119,8 @@ struct SkinningJob {
     /// reach the listed vertices, every listed vertex is < vertexCount (one
     /// max reduction over the list), every run lies inside the arrays with
     /// consistent `start` values (runs and boneRuns each counted from 0),
-    /// and the ISA is supported. The bone
+    /// planes given hold 3 * vertexCount floats (normal planes only with
+    /// normals), and the ISA is supported. The bone
     /// indices are not scanned (see boneIndices). Like ozz-animation, cheap
     /// enough to run on every call.
     bool validate() const noexcept;
