@@ -399,12 +399,13 @@ void MeshDeformer::planOrder(std::size_t n) {
         out_.inSlotOrder(rawPositions_, 3, orderedPositions_);
         out_.inSlotOrder(baseNormals_, 3, orderedNormals_);
     }
-    // Planes only help the sixteen-lane kernels (AVX-512) on the CPU;
+    // Planes only help the lane kernels (AVX2, AVX-512) on the CPU;
     // elsewhere they would be memory for nothing.
     positionPlanes_.clear();
     normalPlanes_.clear();
+    const skin::Isa isa = skin::resolveIsa(skin::Isa::Auto);
     if (output_ == Output::Vertices && baseNormals_.size() == 3 * n &&
-        skin::resolveIsa(skin::Isa::Auto) == skin::Isa::Avx512) {
+        (isa == skin::Isa::Avx2 || isa == skin::Isa::Avx512)) {
         toPlanes(ordered_ ? orderedPositions_ : rawPositions_, n, positionPlanes_);
         toPlanes(ordered_ ? orderedNormals_ : baseNormals_, n, normalPlanes_);
     }

@@ -188,9 +188,9 @@ private:
     std::vector<std::uint32_t> unboned_;  // output slots of the vertices without bones
     bool ordered_ = false;
     std::vector<float> orderedPositions_, orderedNormals_;
-    // The inputs in output order again as planes (x, y, z), for the
-    // sixteen-lane kernels (SkinningJob::inPositionPlanes): made with the
-    // order, only where those kernels run and the mesh has normals.
+    // The inputs in output order again as planes (x, y, z), for the lane
+    // kernels (SkinningJob::inPositionPlanes): made with the order, only
+    // where those kernels run (AVX2, AVX-512) and the mesh has normals.
     std::vector<float> positionPlanes_, normalPlanes_;
     std::vector<GroupPlan> groups_;    // the non-empty groups, ascending count
     BoneTransforms boneTransforms_;

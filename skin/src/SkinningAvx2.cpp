@@ -212,6 +212,11 @@ struct BlockContext {
     // Scale 1 and bias 0 (what the renderer passes, the palette having them
     // folded in, PaletteJob::positionScale): runs skip foldScaleBias.
     bool identity;
+    // The inputs as planes (SkinningJob::inPositionPlanes), null when the
+    // job has none or its arrays are not packed; `plane` floats apart.
+    const float* planeP;
+    const float* planeN;
+    std::size_t plane;
 };
 
 /// Entry `bone` of the palette, or the zero entry (setting `bad`) outside it.
@@ -503,7 +508,30 @@ M3G_AVX2_INLINE BlockContext blockContext(const SkinningJob& j) noexcept {
     c.identity = isIdentityScaleBias(s, j.positionBias);
     c.bias = _mm256_setr_ps(j.positionBias[0], j.positionBias[1], j.positionBias[2], 1.0f, j.positionBias[0],
                             j.positionBias[1], j.positionBias[2], 1.0f);
+    const bool planes = !j.inPositionPlanes.empty() && !j.inNormalPlanes.empty() && isPacked(j);
+    c.planeP = planes ? j.inPositionPlanes.data() : nullptr;
+    c.planeN = planes ? j.inNormalPlanes.data() : nullptr;
+    c.plane = j.vertexCount;
     return c;
+}
+
+/// The eight vertices from v (inside the arrays) of a packed job as x, y,
+/// z lanes: three loads each from the planes, or loadSoa3's transposition
+/// of their triples. The same values either way.
+template <bool Planes>
+M3G_AVX2_INLINE void loadLanes8(const BlockContext& c, std::size_t v, __m256& px, __m256& py, __m256& pz, __m256& nx,
+                                __m256& ny, __m256& nz) noexcept {
+    if constexpr (Planes) {
+        px = _mm256_loadu_ps(c.planeP + v);
+        py = _mm256_loadu_ps(c.planeP + c.plane + v);
+        pz = _mm256_loadu_ps(c.planeP + 2 * c.plane + v);
+        nx = _mm256_loadu_ps(c.planeN + v);
+        ny = _mm256_loadu_ps(c.planeN + c.plane + v);
+        nz = _mm256_loadu_ps(c.planeN + 2 * c.plane + v);
+    } else {
+        loadSoa3(c.inP + 3 * v, px, py, pz);
+        loadSoa3(c.inN + 3 * v, nx, ny, nz);
+    }
 }
 
 template <int K>
@@ -602,7 +630,7 @@ M3G_AVX2 void skinBlocks(const SkinningJob& j, std::size_t begin, std::size_t en
 /// the run's rows: inputs loaded straight from packed arrays (the last,
 /// partial block too, storing only its lanes), or gathered and scattered
 /// lane by lane at other strides and in arrays shorter than a block.
-template <class Rows>
+template <bool Planes, class Rows>
 M3G_AVX2_INLINE void skinRunRows(const SkinningJob& j, const BlockContext& c, bool packed, const Rows& rows,
                                  std::size_t v, std::size_t count) noexcept {
     const std::size_t end = v + count;
@@ -612,7 +640,9 @@ M3G_AVX2_INLINE void skinRunRows(const SkinningJob& j, const BlockContext& c, bo
         // loadSoa3 reads exactly the eight vertices' 24 floats (a validated
         // run ends inside the arrays).
         for (; v + 8 <= end; v += 8) {
-            const Block o = skinUniform(rows, c.inP + v * 3, c.inN + v * 3);
+            __m256 px, py, pz, nx, ny, nz;
+            loadLanes8<Planes>(c, v, px, py, pz, nx, ny, nz);
+            const Block o = skinUniform(rows, px, py, pz, nx, ny, nz);
             storeSoa3(outP + v * 3, o.x, o.y, o.z);
             storeSoa3(outN + v * 3, o.nx, o.ny, o.nz);
         }
@@ -623,7 +653,9 @@ M3G_AVX2_INLINE void skinRunRows(const SkinningJob& j, const BlockContext& c, bo
         // (the ones outside the run are read, not written), and only the
         // run's lanes stored.
         const std::size_t base = v + 8 <= j.vertexCount ? v : j.vertexCount - 8;
-        const Block o = skinUniform(rows, c.inP + base * 3, c.inN + base * 3);
+        __m256 px, py, pz, nx, ny, nz;
+        loadLanes8<Planes>(c, base, px, py, pz, nx, ny, nz);
+        const Block o = skinUniform(rows, px, py, pz, nx, ny, nz);
         storeSoa3Lanes(outP + base * 3, o.x, o.y, o.z, v - base, end - v);
         storeSoa3Lanes(outN + base * 3, o.nx, o.ny, o.nz, v - base, end - v);
         return;
@@ -640,7 +672,7 @@ M3G_AVX2_INLINE void skinRunRows(const SkinningJob& j, const BlockContext& c, bo
     }
 }
 
-template <int K>
+template <int K, bool Planes>
 M3G_AVX2_INLINE void skinRun(const SkinningJob& j, const BlockContext& c, bool packed, std::size_t runFirst,
                              std::size_t v, std::size_t count) noexcept {
     const std::int32_t* bi = c.boneIndices + runFirst * c.stride;
@@ -664,9 +696,9 @@ M3G_AVX2_INLINE void skinRun(const SkinningJob& j, const BlockContext& c, bool p
     if (count >= 24) {
         UniformRows uniform;
         broadcastRows(rows, uniform);
-        skinRunRows(j, c, packed, uniform, v, count);
+        skinRunRows<Planes>(j, c, packed, uniform, v, count);
     } else {
-        skinRunRows(j, c, packed, RowBroadcasts{rows}, v, count);
+        skinRunRows<Planes>(j, c, packed, RowBroadcasts{rows}, v, count);
     }
 }
 
@@ -677,7 +709,11 @@ M3G_AVX2 void skinRuns(const SkinningJob& j, std::size_t begin, std::size_t end)
     const bool packed = isPacked(j);
     RunPieces pieces(j.runs, begin, end);
     std::size_t runFirst, first, count;
-    while (pieces.next(runFirst, first, count)) skinRun<K>(j, c, packed, runFirst, first, count);
+    if (c.planeP) {
+        while (pieces.next(runFirst, first, count)) skinRun<K, true>(j, c, packed, runFirst, first, count);
+    } else {
+        while (pieces.next(runFirst, first, count)) skinRun<K, false>(j, c, packed, runFirst, first, count);
+    }
 }
 
 // ---------------------------------------------------------------------------
@@ -713,12 +749,11 @@ M3G_AVX2_INLINE void blendRow8(const float* const (&e)[4], const __m256 (&w)[4],
 
 /// The eight vertices from b of a bone run whose K entries are `e`; lanes
 /// [lo, hi) stored.
-template <int K, bool NormalsFromPositions>
+template <int K, bool NormalsFromPositions, bool Planes>
 M3G_AVX2_INLINE void skinBoneBlock(const SkinningJob& j, const BlockContext& c, const float* const (&e)[4],
                                    std::size_t b, std::size_t lo, std::size_t hi) noexcept {
     __m256 px, py, pz, nx, ny, nz;
-    loadSoa3(c.inP + 3 * b, px, py, pz);
-    loadSoa3(c.inN + 3 * b, nx, ny, nz);
+    loadLanes8<Planes>(c, b, px, py, pz, nx, ny, nz);
     if (!c.identity) {
         const __m256 s = _mm256_set1_ps(j.positionScale);
         px = _mm256_fmadd_ps(px, s, _mm256_set1_ps(j.positionBias[0]));
@@ -776,7 +811,7 @@ M3G_AVX2_INLINE void skinBoneBlock(const SkinningJob& j, const BlockContext& c, 
     }
 }
 
-template <int K, bool NormalsFromPositions>
+template <int K, bool NormalsFromPositions, bool Planes>
 M3G_AVX2 void skinBoneRuns(const SkinningJob& j, std::size_t begin, std::size_t end) noexcept {
     const BlockContext c = blockContext(j);
     std::uint32_t tail[256];
@@ -805,7 +840,7 @@ M3G_AVX2 void skinBoneRuns(const SkinningJob& j, std::size_t begin, std::size_t 
         for (std::size_t b = runFirst + (first - runFirst) / 8 * 8; b < stop && b < wholeEnd; b += 8) {
             const std::size_t lo = first > b ? first - b : 0;
             const std::size_t hi = stop - b < 8 ? stop - b : 8;
-            skinBoneBlock<K, NormalsFromPositions>(j, c, e, b, lo, hi);
+            skinBoneBlock<K, NormalsFromPositions, Planes>(j, c, e, b, lo, hi);
         }
         for (std::size_t v = first > wholeEnd ? first : wholeEnd; v < stop; ++v) {
             tail[tailCount++] = static_cast<std::uint32_t>(v);
@@ -817,10 +852,14 @@ M3G_AVX2 void skinBoneRuns(const SkinningJob& j, std::size_t begin, std::size_t 
 
 template <int K>
 M3G_AVX2_INLINE void boneRuns(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept {
-    if (job.normalsFromPositions)
-        skinBoneRuns<K, true>(job, begin, end);
-    else
-        skinBoneRuns<K, false>(job, begin, end);
+    const bool planes = !job.inPositionPlanes.empty() && !job.inNormalPlanes.empty();  // packed: checked by the caller
+    if (job.normalsFromPositions) {
+        if (planes) skinBoneRuns<K, true, true>(job, begin, end);
+        else skinBoneRuns<K, true, false>(job, begin, end);
+    } else {
+        if (planes) skinBoneRuns<K, false, true>(job, begin, end);
+        else skinBoneRuns<K, false, false>(job, begin, end);
+    }
 }
 
 template <bool Normals>

@@ -101,12 +101,13 @@ struct SkinningJob {
     /// x of vertices 0 .. vertexCount-1, then their y, then their z
     /// (3 * vertexCount floats each). Inputs are static while a mesh's
     /// vertices are (MeshDeformer makes the planes when they change), so the
-    /// sixteen-lane kernels (Isa::Avx512: runs and bone runs) then read a
-    /// block's x, y and z with three loads instead of transposing its xyz
-    /// triples each frame; outputs are the same bits. Used only when both
-    /// are given (normals present) and the arrays are packed (strides 3);
-    /// every other path reads inPositions and inNormals. The contents must
-    /// be theirs: validate() checks sizes, not values.
+    /// lane kernels of runs and bone runs (Isa::Avx2 eight lanes,
+    /// Isa::Avx512 sixteen) then read a block's x, y and z with three loads
+    /// instead of transposing its xyz triples each frame; outputs are the
+    /// same bits. Used only when both are given (normals present) and the
+    /// arrays are packed (strides 3); every other path (the vertex lists,
+    /// Scalar, SSE2) reads inPositions and inNormals. The contents must be
+    /// theirs: validate() checks sizes, not values.
     std::span<const float> inPositionPlanes;
     std::span<const float> inNormalPlanes;
 
