@@ -79,14 +79,23 @@ bool BoneTransforms::compute(const SkinnedMesh& mesh, std::vector<float>& out) {
             }
             const std::uint32_t revision = p.node->getRevision();
             const bool parentDirty = p.parentIndex >= 0 && nodes_[static_cast<std::size_t>(p.parentIndex)].dirty;
-            p.dirty = force || parentDirty || revision != p.revision;
+            const bool own = force || revision != p.revision;
+            p.dirty = own || parentDirty;
             if (!p.dirty) continue;
             p.revision = revision;
             // (node -> mesh) = (parent -> mesh) x composite, the same
-            // association as composing the path top-down.
+            // association as composing the path top-down. A node whose own
+            // transform is the identity (exporters' bone nodes under an
+            // animated joint often are) passes its parent's on: the product
+            // with the identity is that matrix.
             const auto i = static_cast<std::size_t>(&p - nodes_.data());
-            toMesh_[i] = p.parentIndex < 0 ? p.node->compositeTransform()
-                                           : toMesh_[static_cast<std::size_t>(p.parentIndex)] * p.node->compositeTransform();
+            if (!own && p.identity) {
+                toMesh_[i] = p.parentIndex < 0 ? Transform() : toMesh_[static_cast<std::size_t>(p.parentIndex)];
+                continue;
+            }
+            const Transform composite = p.node->compositeTransform();
+            if (own) p.identity = composite == Transform();
+            toMesh_[i] = p.parentIndex < 0 ? composite : toMesh_[static_cast<std::size_t>(p.parentIndex)] * composite;
         }
     }
     Transform general;  // outside the loop: a Transform's constructor writes the identity

@@ -10,7 +10,8 @@
 // walked per call. A node's Object3D revision is bumped by every change of
 // its transform (Transformable's setters, animate()), so a node whose
 // revision and parent's transform are the ones of the last call keeps its
-// transform, bit for bit, without composing it again.
+// transform, bit for bit, without composing it again; one whose own
+// transform was the identity at its revision takes its parent's as it is.
 #pragma once
 
 #include <cstddef>
@@ -54,6 +55,7 @@ private:
         int parentIndex = -1;          // in nodes_, or -1 when the parent is the mesh
         std::uint32_t revision = 0;    // the node's revision at its last composition
         bool dirty = true;             // composed again by this call
+        bool identity = false;         // its composite at that revision was the identity
     };
     std::vector<PathNode> nodes_;
     std::vector<Transform> toMesh_;   // per node of nodes_

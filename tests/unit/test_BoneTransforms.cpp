@@ -140,3 +140,45 @@ TEST(BoneTransforms, DeepChainGrowsTheMemo) {
     bt.compute(*mesh, out);  // again, with the grown table
     expectLikeGetTransformTo(*mesh, out);
 }
+
+TEST(BoneTransforms, IdentityBonePassesItsParentsTransformOnUntilItMoves) {
+    // skeleton -> joint (animated) -> bone (identity, the way exporters write
+    // a bone under its joint), and a second identity node under that bone.
+    // The identity nodes take their parent's transform while only the
+    // parent moves; once the bone gets a transform of its own (and when it
+    // returns to the identity) it is composed again, and the tip follows it.
+    Ref<Group> skeleton = new Group(), joint = new Group(), bone = new Group(), tip = new Group();
+    skeleton->addChild(joint);
+    joint->addChild(bone);
+    bone->addChild(tip);
+    skeleton->setTranslation(1, 2, 3);
+    Ref<SkinnedMesh> mesh = meshWith(skeleton);
+    mesh->addTransform(bone, 1, 0, 2);
+    mesh->addTransform(tip, 1, 2, 1);
+    detail::BoneTransforms bt;
+    std::vector<float> out;
+    auto pose = [&](float angle) {
+        joint->setOrientation(angle, 0.2f, 1.0f, 0.4f);
+        joint->setTranslation(0.5f, -1.0f, 0.25f * angle);
+        EXPECT_TRUE(bt.compute(*mesh, out));
+        expectLikeGetTransformTo(*mesh, out);
+    };
+    pose(10);
+    pose(35);
+    // joint -> mesh: T(1, 2, 3) T(0.5, -1, 8.75) R; both bones carry it, their translation the sum.
+    EXPECT_NEAR(out[3], 1.5f, 1e-5f);
+    EXPECT_NEAR(out[7], 1.0f, 1e-5f);
+    EXPECT_NEAR(out[11], 3.0f + 0.25f * 35.0f, 1e-5f);
+    for (int i = 0; i < 16; ++i) EXPECT_EQ(out[static_cast<std::size_t>(i)], out[16 + static_cast<std::size_t>(i)]) << i;
+    const std::vector<float> before = out;
+    bone->setTranslation(0, 2, 0);  // the bone moves on its own
+    EXPECT_TRUE(bt.compute(*mesh, out));
+    expectLikeGetTransformTo(*mesh, out);
+    EXPECT_NE(out[7], before[7]) << "the bone kept the joint's transform";
+    for (int i = 0; i < 16; ++i) EXPECT_EQ(out[static_cast<std::size_t>(i)], out[16 + static_cast<std::size_t>(i)]) << i;
+    pose(60);
+    bone->setTranslation(0, 0, 0);  // back to the identity
+    pose(80);
+    for (int i = 0; i < 16; ++i) EXPECT_EQ(out[static_cast<std::size_t>(i)], out[16 + static_cast<std::size_t>(i)]) << i;
+    EXPECT_FALSE(bt.compute(*mesh, out)) << "nothing moved";
+}
