@@ -89,8 +89,8 @@ bool BoneTransforms::compute(const SkinnedMesh& mesh, std::vector<float>& out) {
             // animated joint often are) passes its parent's on: the product
             // with the identity is that matrix.
             const auto i = static_cast<std::size_t>(&p - nodes_.data());
-            if (!own && p.identity) {
-                toMesh_[i] = p.parentIndex < 0 ? Transform() : toMesh_[static_cast<std::size_t>(p.parentIndex)];
+            if (!own && p.identity) {  // dirty through its parent only, so it has one in nodes_
+                toMesh_[i] = toMesh_[static_cast<std::size_t>(p.parentIndex)];
                 continue;
             }
             const Transform composite = p.node->compositeTransform();

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 #include <m3g/skin/Morph.h>
 #include <m3g/skin/Palette.h>
@@ -97,6 +98,27 @@ struct GramBounds {
 inline bool isPacked(const SkinningJob& job) noexcept {
     return job.inPositionStride == 3 && job.inNormalStride == 3 && job.outPositionStride == 3 &&
            job.outNormalStride == 3;
+}
+
+/// True when the lane kernels read `job`'s input planes
+/// (SkinningJob::inPositionPlanes): both given, and the arrays packed.
+inline bool readsPlanes(const SkinningJob& job) noexcept {
+    return !job.inPositionPlanes.empty() && !job.inNormalPlanes.empty() && isPacked(job);
+}
+
+/// f(std::bool_constant<job.normalsFromPositions>, std::bool_constant<readsPlanes(job)>):
+/// the bone-run kernels' two compile-time choices (AVX2, AVX-512), made
+/// once per call rather than per block.
+template <class F>
+inline void withBoneRunChoices(const SkinningJob& job, F&& f) {
+    const bool planes = readsPlanes(job);
+    if (job.normalsFromPositions) {
+        if (planes) f(std::true_type{}, std::true_type{});
+        else f(std::true_type{}, std::false_type{});
+    } else {
+        if (planes) f(std::false_type{}, std::true_type{});
+        else f(std::false_type{}, std::false_type{});
+    }
 }
 
 /// The palette entries (as floats) of a bone run's K slots, `bi` being its

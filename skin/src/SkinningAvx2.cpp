@@ -508,7 +508,7 @@ M3G_AVX2_INLINE BlockContext blockContext(const SkinningJob& j) noexcept {
     c.identity = isIdentityScaleBias(s, j.positionBias);
     c.bias = _mm256_setr_ps(j.positionBias[0], j.positionBias[1], j.positionBias[2], 1.0f, j.positionBias[0],
                             j.positionBias[1], j.positionBias[2], 1.0f);
-    const bool planes = !j.inPositionPlanes.empty() && !j.inNormalPlanes.empty() && isPacked(j);
+    const bool planes = readsPlanes(j);
     c.planeP = planes ? j.inPositionPlanes.data() : nullptr;
     c.planeN = planes ? j.inNormalPlanes.data() : nullptr;
     c.plane = j.vertexCount;
@@ -852,14 +852,9 @@ M3G_AVX2 void skinBoneRuns(const SkinningJob& j, std::size_t begin, std::size_t 
 
 template <int K>
 M3G_AVX2_INLINE void boneRuns(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept {
-    const bool planes = !job.inPositionPlanes.empty() && !job.inNormalPlanes.empty();  // packed: checked by the caller
-    if (job.normalsFromPositions) {
-        if (planes) skinBoneRuns<K, true, true>(job, begin, end);
-        else skinBoneRuns<K, true, false>(job, begin, end);
-    } else {
-        if (planes) skinBoneRuns<K, false, true>(job, begin, end);
-        else skinBoneRuns<K, false, false>(job, begin, end);
-    }
+    withBoneRunChoices(job, [&](auto normalsFromPositions, auto planes) {
+        skinBoneRuns<K, decltype(normalsFromPositions)::value, decltype(planes)::value>(job, begin, end);
+    });
 }
 
 template <bool Normals>

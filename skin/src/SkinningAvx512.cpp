@@ -72,11 +72,6 @@ struct Inputs16 {
     }
 };
 
-/// True when a packed job's planes can be read (SkinningJob::inPositionPlanes).
-inline bool hasPlanes(const SkinningJob& j) noexcept {
-    return !j.inPositionPlanes.empty() && !j.inNormalPlanes.empty();
-}
-
 /// Rows of a run: its K palette entries blended (P0 P1 P2 N0 N1 N2, four
 /// floats each, as PaletteEntry), the job's position scale and bias folded
 /// into the position rows. False (rows unset) when a slot's bone is
@@ -328,19 +323,14 @@ M3G_AVX512 void skinBoneRuns16(const SkinningJob& j, std::size_t begin, std::siz
 
 template <int K>
 M3G_AVX512_INLINE void boneRuns16(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept {
-    const bool planes = hasPlanes(job);
-    if (job.normalsFromPositions) {
-        if (planes) skinBoneRuns16<K, true, true>(job, begin, end);
-        else skinBoneRuns16<K, true, false>(job, begin, end);
-    } else {
-        if (planes) skinBoneRuns16<K, false, true>(job, begin, end);
-        else skinBoneRuns16<K, false, false>(job, begin, end);
-    }
+    withBoneRunChoices(job, [&](auto normalsFromPositions, auto planes) {
+        skinBoneRuns16<K, decltype(normalsFromPositions)::value, decltype(planes)::value>(job, begin, end);
+    });
 }
 
 template <int K>
 M3G_AVX512_INLINE void runs16(const SkinningJob& job, std::size_t begin, std::size_t end) noexcept {
-    if (hasPlanes(job))
+    if (readsPlanes(job))
         skinRuns16<K, true>(job, begin, end);
     else
         skinRuns16<K, false>(job, begin, end);
