@@ -159,7 +159,7 @@ void AnimationPlan::build(Object3D& root) {
                 components = sequence->getComponentCount();  // the same for every track on a property
                 if (const AnimationController* c = track.getController().get()) {
                     tracks_.push_back(
-                        {sequence, c, 0, kNotPrepared, {}, nullptr, static_cast<std::uint32_t>(sampleFloats), 0.0f});
+                        {sequence, c, 0, kNotPrepared, {}, nullptr, static_cast<std::uint32_t>(sampleFloats), 0.0f, nullptr});
                     sampleFloats += std::size_t(components);
                 }
             }
@@ -212,10 +212,11 @@ int AnimationPlan::apply(int worldTime) {
         }
         track.weight = weight;
         float* const sample = samples_.data() + track.sampleOffset;
+        track.value = sample;
         // With the validity settled at 0, a constant track's sample is all
-        // there is to know: the value it would sample, copied.
+        // there is to know: the value it would sample, read in place.
         if (track.constant && !(validity > 0.0)) {
-            std::copy_n(track.constant, track.view.components, sample);
+            track.value = track.constant;
             continue;
         }
         const SampleValidity sv = sampleKeyframesDeferringSquad(
@@ -234,25 +235,32 @@ int AnimationPlan::apply(int worldTime) {
             const Property& property = properties_[p];
             const std::size_t components = std::size_t(property.components);
             float* const sum = sum_.data();
-            bool contributed = false;
             // The first contributing track's sample weighted (0 + w s is w
             // s), later ones added weighted, in the object's track order.
+            // A lone track of weight 1 (the usual property) is applied from
+            // its sample as it is: the sum would be a copy of it.
+            const float* value = nullptr;
             for (std::uint32_t t = property.firstTrack; t < property.endTrack; ++t) {
                 const Track& track = tracks_[t];
                 const float weight = track.weight;
                 if (!(weight > 0.0f)) continue;
-                const float* sample = samples_.data() + track.sampleOffset;
-                if (!contributed) {
-                    if (weight != 1.0f)
+                const float* sample = track.value;
+                if (!value) {
+                    if (weight != 1.0f) {
                         for (std::size_t k = 0; k < components; ++k) sum[k] = sample[k] * weight;
-                    else
-                        std::copy_n(sample, components, sum);
-                    contributed = true;
+                        value = sum;
+                    } else {
+                        value = sample;
+                    }
                 } else {
+                    if (value != sum) {
+                        for (std::size_t k = 0; k < components; ++k) sum[k] = value[k];
+                        value = sum;
+                    }
                     for (std::size_t k = 0; k < components; ++k) sum[k] += weight * sample[k];
                 }
             }
-            if (contributed) target.object->updateProperty(property.property, std::span<const float>(sum, components));
+            if (value) target.object->updateProperty(property.property, std::span<const float>(value, components));
         }
     }
     return static_cast<int>(std::clamp(validity, 0.0, kForever));

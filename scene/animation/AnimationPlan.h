@@ -96,6 +96,7 @@ private:
         const float* constant;
         std::uint32_t sampleOffset;  // its sample in samples_
         float weight;                // apply()'s first pass: > 0 when it contributes this time
+        const float* value;          // apply()'s first pass: its sample, or `constant` read in place
     };
     static constexpr std::uint64_t kNotPrepared = ~std::uint64_t{0};
 

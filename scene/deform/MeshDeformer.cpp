@@ -38,6 +38,19 @@ namespace {
 /// Meshes with at least this many vertices are deformed on the shared
 /// thread pool, in chunks of kGrain vertices.
 constexpr std::size_t kParallelVertices = 16384;
+
+/// Whether two palette entries differ in any bit: a fixed-size loop the
+/// compiler turns into a few vector compares (memcmp was a library call
+/// per bone per frame).
+bool entryDiffers(const skin::PaletteEntry& a, const skin::PaletteEntry& b) noexcept {
+    constexpr std::size_t words = sizeof(skin::PaletteEntry) / sizeof(std::uint32_t);
+    std::uint32_t x[words], y[words];
+    std::memcpy(x, &a, sizeof x);
+    std::memcpy(y, &b, sizeof y);
+    std::uint32_t diff = 0;
+    for (std::size_t i = 0; i < words; ++i) diff |= x[i] ^ y[i];
+    return diff != 0;
+}
 constexpr std::size_t kGrain = 4096;
 
 /// Raw values of `array` as floats (componentCount per vertex).
@@ -297,7 +310,7 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         const auto composed = boneTransforms_.changedBones();
         std::size_t changed = 0;
         for (std::size_t b = 0; b < bones; ++b) {
-            entryChanged_[b] = composed[b] && std::memcmp(&palette_[b], &newPalette_[b], sizeof(skin::PaletteEntry)) != 0;
+            entryChanged_[b] = composed[b] && entryDiffers(palette_[b], newPalette_[b]);
             changed += entryChanged_[b];
         }
         if (changed == 0) return false;

@@ -13,9 +13,14 @@ namespace m3g::skin {
 namespace {
 
 // A per-vertex array of `count` vertices at `stride` floats holds
-// (count - 1) * stride + 3 floats at least.
+// (count - 1) * stride + 3 floats at least. A product with an overflow
+// check, not a quotient: every job of every mesh asks several times a
+// frame, and a 64-bit division costs more than the rest of the check.
 bool holds(std::span<const float> a, std::size_t count, std::size_t stride) noexcept {
-    return stride >= 3 && (count == 0 || (a.size() >= 3 && (a.size() - 3) / stride >= count - 1));
+    if (stride < 3) return false;
+    if (count == 0) return true;
+    std::size_t reach;
+    return !__builtin_mul_overflow(count - 1, stride, &reach) && a.size() >= 3 && reach <= a.size() - 3;
 }
 
 void runRange(const SkinningJob& job, Isa isa, std::size_t begin, std::size_t end) noexcept {
@@ -72,7 +77,13 @@ bool check(const SkinningJob& j, std::size_t* runVertices, std::size_t* boneRunV
         const auto stride = static_cast<std::size_t>(j.influenceStride);
         const auto count = static_cast<std::size_t>(j.influenceCount);
         const std::size_t size = std::min(j.boneIndices.size(), j.boneWeights.size());
-        limit = size < count ? 0 : std::min(limit, (size - count) / stride + 1);
+        // Vertex v's slots end at v * stride + count: every vertex below
+        // the vertex count (the usual table, one row per vertex) or the
+        // first that does not fit (the quotient only then).
+        std::size_t end;
+        const bool all = limit == 0 || (!__builtin_mul_overflow(limit - 1, stride, &end) && end <= size &&
+                                        size - end >= count);
+        if (!all) limit = size < count ? 0 : std::min(limit, (size - count) / stride + 1);
     }
     const std::uint64_t bound = limit;
     // Runs: inside the arrays, `start` the running sum.

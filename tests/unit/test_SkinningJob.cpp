@@ -11,6 +11,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <numeric>
 #include <random>
 #include <string>
@@ -161,6 +162,26 @@ TEST(SkinningJob, ValidateRejectsShortArraysAndBadStrides) {
     }));
     // Two vertices need (2 - 1) * stride + 3 floats.
     EXPECT_FALSE(check([](OneVertex& f) { f.job.vertexCount = 2; }));
+    // Three vertices with every array long enough; then an input stride
+    // whose reach, 2 * 2^63, overflows size_t: rejected, not wrapped to a
+    // reach of 0 that three floats would seem to hold.
+    const auto threeVertices = [](OneVertex& f) {
+        for (auto* a : {&f.in, &f.nin, &f.out, &f.nout}) a->resize(9);
+        f.bones.resize(12, -1);
+        f.weights.resize(12, 0.0f);
+        f.job.vertexCount = 3;
+        f.job.inPositions = f.in;
+        f.job.inNormals = f.nin;
+        f.job.outPositions = f.out;
+        f.job.outNormals = f.nout;
+        f.job.boneIndices = f.bones;
+        f.job.boneWeights = f.weights;
+    };
+    EXPECT_TRUE(check(threeVertices));
+    EXPECT_FALSE(check([&](OneVertex& f) {
+        threeVertices(f);
+        f.job.inPositionStride = (std::numeric_limits<std::size_t>::max() >> 1) + 1;
+    }));
     // An ISA the CPU lacks is rejected, a supported one accepted.
     EXPECT_EQ(check([](OneVertex& f) { f.job.isa = Isa::Avx2; }), isaSupported(Isa::Avx2));
     EXPECT_EQ(check([](OneVertex& f) { f.job.isa = Isa::Avx512; }), isaSupported(Isa::Avx512));
