@@ -1,4 +1,5 @@
 #include "KeyframeSampler.h"
+#include "SquadLanes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -517,29 +518,26 @@ SampleValidity sampleKeyframesDeferringSquad(const KeyframeView& k, double time,
 }
 
 void sampleSquads(std::span<const SquadSample> samples) noexcept {
-    // The steps of sampleKeyframes' SQUAD case, each over a block of
-    // samples before the next: the same functions on the same values.
-    constexpr std::size_t kBlock = 8;
-    for (std::size_t first = 0; first < samples.size(); first += kBlock) {
-        const std::size_t n = std::min(kBlock, samples.size() - first);
-        const SquadSample* b = samples.data() + first;
-        Quatf keyPoint[kBlock], controlPoint[kBlock];
-        Arc arc[kBlock];
-        for (std::size_t i = 0; i < n; ++i) {
-            const SquadSample& q = b[i];
-            keyPoint[i] = arcAt(quatfAt(q.key), arcFrom(std::span<const float>(q.keyArc, kArcFloats), 0), q.u);
-            controlPoint[i] =
+    // Four at a time in SSE lanes (SquadLanes.h: the same operations, so
+    // the same bits); what the lanes leave (nearly opposite keys, inner
+    // points equal or opposite) by the functions themselves.
+    for (std::size_t first = 0; first < samples.size(); first += 4) {
+        const int n = int(std::min<std::size_t>(4, samples.size() - first));
+        const SquadSample* lanes[4];
+        for (int i = 0; i < n; ++i) lanes[i] = &samples[first + std::size_t(i)];
+        const unsigned done = squadLanes(lanes, n);
+        for (int i = 0; i < n; ++i) {
+            if (done & (1u << i)) continue;
+            const SquadSample& q = *lanes[i];
+            const Quatf keyPoint =
+                arcAt(quatfAt(q.key), arcFrom(std::span<const float>(q.keyArc, kArcFloats), 0), q.u);
+            const Quatf controlPoint =
                 arcAt(quatfAt(q.control), arcFrom(std::span<const float>(q.controlArc, kArcFloats), 0), q.u);
-        }
-        for (std::size_t i = 0; i < n; ++i) arc[i] = arcOf(keyPoint[i], controlPoint[i]);
-        for (std::size_t i = 0; i < n; ++i) {
-            const float u = b[i].u;
-            const Quatf q = arcAt(keyPoint[i], arc[i], 2.0f * u * (1.0f - u));
-            float* out = b[i].out;
-            out[0] = q.x;
-            out[1] = q.y;
-            out[2] = q.z;
-            out[3] = q.w;
+            const Quatf r = arcAt(keyPoint, arcOf(keyPoint, controlPoint), 2.0f * q.u * (1.0f - q.u));
+            q.out[0] = r.x;
+            q.out[1] = r.y;
+            q.out[2] = r.z;
+            q.out[3] = r.w;
         }
     }
 }

@@ -155,10 +155,10 @@ SampleValidity sampleKeyframesDeferringSquad(const KeyframeView& k, double time,
                                              std::vector<SquadSample>& deferred);
 
 /// Computes SQUAD samples (sampleKeyframes' own go through here too, one
-/// at a time, so deferred ones are the same bits). Several at a time, step by step (the two inner SLERPs of each,
-/// then each outer arc, then each point on it): a sample is one long chain
-/// of dependent float operations (square roots, divisions, polynomials),
-/// and interleaving the chains of different tracks lets them overlap.
+/// at a time, so deferred ones are the same bits). Four at a time in SSE
+/// lanes (SquadLanes.h): a sample is one long chain of dependent float
+/// operations (square roots, divisions, polynomials), and the chains of
+/// four tracks side by side cost about what one did.
 void sampleSquads(std::span<const SquadSample> samples) noexcept;
 
 /// The derivative of the sampled value with respect to sequence time at
