@@ -225,12 +225,21 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
     const VertexBuffer& vb = *mesh.vertexBuffer();
     // A fixed set of three: compared in place (sourcesChanged's list is for
     // the MorphingMesh's variable one).
-    auto source = [](const Object3D* o) { return o ? Source{o->getObjectId(), o->getRevision()} : Source{}; };
-    const SkinnedSources now{source(&vb), source(vb.positions()), source(vb.normals())};
+    // Compared and stored field by field: a copy of the whole array read
+    // its padding back with 16-byte loads that the fields' 8- and 4-byte
+    // stores could not forward to (a stall per mesh per frame).
+    const Object3D* const sources[3] = {&vb, vb.positions(), vb.normals()};
+    bool sourcesDiffer = false;
+    for (std::size_t i = 0; i < 3; ++i) {
+        const std::uint64_t id = sources[i] ? sources[i]->getObjectId() : 0;
+        const std::uint32_t revision = sources[i] ? sources[i]->getRevision() : 0;
+        sourcesDiffer |= id != skinnedSources_[i].id || revision != skinnedSources_[i].revision;
+        skinnedSources_[i].id = id;
+        skinnedSources_[i].revision = revision;
+    }
     // (Another kind of mesh since, and back: meshChanged says so, whatever
     // skinnedSources_ and sources_ still hold.)
-    const bool inputsChanged = meshChanged(Kind::Skinned, mesh) || now != skinnedSources_ || !valid_;
-    skinnedSources_ = now;
+    const bool inputsChanged = meshChanged(Kind::Skinned, mesh) || sourcesDiffer || !valid_;
     const auto n = static_cast<std::size_t>(vb.getVertexCount());
     if (inputsChanged) {
         valid_ = false;
@@ -259,7 +268,7 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         tableRevision_ = table.revision();
         ++inputStamp_;
         planOrder(n);
-        planGroups();
+        planGroups(n, table.maxInfluences());
     }
 
     // The palette, once per bone: (bone -> mesh now) x (at rest). The
@@ -343,13 +352,11 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
     // mix bones). Every job works in the output order: the compact space's
     // influenced vertices, then those without bones.
     const int stride = table.maxInfluences();
-    const std::span<const float> inPositions = ordered_ ? std::span<const float>(orderedPositions_) : rawPositions_;
-    const std::span<const float> inNormals = ordered_ ? std::span<const float>(orderedNormals_) : baseNormals_;
-    for (const GroupPlan& g : groups_) {
+    for (GroupPlan& g : groups_) {
         const int c = g.count;
         if (c == 0 && kept) continue;
-        skin::SkinningJob job;
-        job.vertices = g.vertices;
+        // The plan's job (planGroups), with what changes from frame to frame.
+        skin::SkinningJob& job = g.job;
         job.runs = partial ? movedRuns(g.runs, partition_.compactBones(), stride, c, entryChanged_, movedRuns_)
                            : g.runs;
         // A bone run's vertices share its bones: it moved with them.
@@ -357,24 +364,13 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
                                            movedBoneRuns_)
                                : g.boneRuns;
         if (job.vertices.empty() && job.runs.empty() && job.boneRuns.empty()) continue;
-        job.vertexCount = n;
-        job.influenceCount = c;
-        job.influenceStride = stride;
-        job.boneIndices = partition_.compactBones();
-        job.boneWeights = partition_.compactWeights();
-        job.palette = palette_;
+        job.palette = palette_;  // one of two buffers, swapped each frame
         job.normalsFromPositions = conformal;
         // Influenced vertices: the palette applies the scale and bias.
         if (c == 0) {
             job.positionScale = skinInputs_.positionScale;
             job.positionBias = skinInputs_.positionBias;
         }
-        job.inPositions = inPositions;
-        job.outPositions = out_.positions;
-        job.inNormals = inNormals;
-        job.outNormals = out_.normals;
-        job.inPositionPlanes = positionPlanes_;
-        job.inNormalPlanes = normalPlanes_;
         require(g.parallel ? job.runParallel(skin::ThreadPool::shared(), kGrain) : job.run(), "skinning job");
     }
     finish();
@@ -424,8 +420,10 @@ void MeshDeformer::planOrder(std::size_t n) {
     }
 }
 
-void MeshDeformer::planGroups() {
+void MeshDeformer::planGroups(std::size_t n, int stride) {
     groups_.clear();
+    const std::span<const float> inPositions = ordered_ ? std::span<const float>(orderedPositions_) : rawPositions_;
+    const std::span<const float> inNormals = ordered_ ? std::span<const float>(orderedNormals_) : baseNormals_;
     for (int c = 0; c <= partition_.maxInfluences(); ++c) {
         const auto group = partition_.group(c);
         if (group.empty()) continue;
@@ -434,11 +432,27 @@ void MeshDeformer::planGroups() {
         g.parallel = group.size() >= kParallelVertices;
         if (c == 0) {
             g.vertices = unboned_;
-            continue;
+        } else {
+            g.vertices = partition_.compactLoose(c);
+            g.runs = partition_.compactRuns(c);
+            g.boneRuns = partition_.compactBoneRuns(c);
         }
-        g.vertices = partition_.compactLoose(c);
-        g.runs = partition_.compactRuns(c);
-        g.boneRuns = partition_.compactBoneRuns(c);
+        // Everything of the group's job that holds until the next plan
+        // (these arrays are only resized on the way here), set once rather
+        // than a job built each frame.
+        skin::SkinningJob& job = g.job;
+        job.vertices = g.vertices;
+        job.vertexCount = n;
+        job.influenceCount = c;
+        job.influenceStride = stride;
+        job.boneIndices = partition_.compactBones();
+        job.boneWeights = partition_.compactWeights();
+        job.inPositions = inPositions;
+        job.outPositions = out_.positions;
+        job.inNormals = inNormals;
+        job.outNormals = out_.normals;
+        job.inPositionPlanes = positionPlanes_;
+        job.inNormalPlanes = normalPlanes_;
     }
 }
 

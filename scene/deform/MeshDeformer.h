@@ -71,6 +71,14 @@ using frame::SkinInputs;
 /// its own side table) and calls update() before using vertices().
 class MeshDeformer {
 public:
+    MeshDeformer() = default;
+    // Its plans hold spans into its own arrays: a copy would read and write
+    // the original's. A move keeps them valid (the buffers move along).
+    MeshDeformer(const MeshDeformer&) = delete;
+    MeshDeformer& operator=(const MeshDeformer&) = delete;
+    MeshDeformer(MeshDeformer&&) noexcept = default;
+    MeshDeformer& operator=(MeshDeformer&&) noexcept = default;
+
     /// What update() produces.
     enum class Output {
         /// Runs the CPU kernels: vertices() holds the deformed vertices.
@@ -140,6 +148,10 @@ private:
         bool parallel = false;                            // large enough for the thread pool
         std::span<const std::uint32_t> vertices;          // loose (count 0: every vertex without bones)
         std::span<const skin::InfluenceRun> runs, boneRuns;
+        // Its job as planned: the arrays, counts and strides; each frame
+        // sets the runs (all, or those that moved), palette and normal
+        // method.
+        skin::SkinningJob job;
     };
 
     bool updateSkinned(const SkinnedMesh& mesh);
@@ -147,8 +159,9 @@ private:
     /// vertices, and the inputs gathered into it (as packed triples, and as
     /// planes where the kernels read them).
     void planOrder(std::size_t n);
-    /// Lists groups_ from partition_ (after a change of the table or inputs).
-    void planGroups();
+    /// Lists groups_ from partition_ (after a change of the table or
+    /// inputs) with their jobs for `n` vertices at influence stride `stride`.
+    void planGroups(std::size_t n, int stride);
     bool updateMorphing(const MorphingMesh& mesh);
     /// Records `mesh`'s kind and id; true when either differs from the last
     /// call's.
