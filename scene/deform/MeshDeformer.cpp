@@ -38,6 +38,7 @@ namespace {
 /// Meshes with at least this many vertices are deformed on the shared
 /// thread pool, in chunks of kGrain vertices.
 constexpr std::size_t kParallelVertices = 16384;
+constexpr std::size_t kGrain = 4096;
 
 /// Whether two palette entries differ in any bit: a fixed-size loop the
 /// compiler turns into a few vector compares (memcmp was a library call
@@ -51,7 +52,6 @@ bool entryDiffers(const skin::PaletteEntry& a, const skin::PaletteEntry& b) noex
     for (std::size_t i = 0; i < words; ++i) diff |= x[i] ^ y[i];
     return diff != 0;
 }
-constexpr std::size_t kGrain = 4096;
 
 /// Raw values of `array` as floats (componentCount per vertex).
 void rawFloats(const VertexArray* array, std::vector<float>& out) {
