@@ -351,12 +351,11 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
     // move keep theirs; loose vertices are all skinned again (their blocks
     // mix bones). Every job works in the output order: the compact space's
     // influenced vertices, then those without bones.
-    const int stride = table.maxInfluences();
     for (GroupPlan& g : groups_) {
-        const int c = g.count;
-        if (c == 0 && kept) continue;
         // The plan's job (planGroups), with what changes from frame to frame.
         skin::SkinningJob& job = g.job;
+        const int c = job.influenceCount, stride = job.influenceStride;
+        if (c == 0 && kept) continue;
         job.runs = partial ? movedRuns(g.runs, partition_.compactBones(), stride, c, entryChanged_, movedRuns_)
                            : g.runs;
         // A bone run's vertices share its bones: it moved with them.
@@ -428,20 +427,18 @@ void MeshDeformer::planGroups(std::size_t n, int stride) {
         const auto group = partition_.group(c);
         if (group.empty()) continue;
         GroupPlan& g = groups_.emplace_back();
-        g.count = c;
         g.parallel = group.size() >= kParallelVertices;
-        if (c == 0) {
-            g.vertices = unboned_;
-        } else {
-            g.vertices = partition_.compactLoose(c);
-            g.runs = partition_.compactRuns(c);
-            g.boneRuns = partition_.compactBoneRuns(c);
-        }
         // Everything of the group's job that holds until the next plan
         // (these arrays are only resized on the way here), set once rather
         // than a job built each frame.
         skin::SkinningJob& job = g.job;
-        job.vertices = g.vertices;
+        if (c == 0) {
+            job.vertices = unboned_;
+        } else {
+            job.vertices = partition_.compactLoose(c);
+            g.runs = partition_.compactRuns(c);
+            g.boneRuns = partition_.compactBoneRuns(c);
+        }
         job.vertexCount = n;
         job.influenceCount = c;
         job.influenceStride = stride;

@@ -144,13 +144,13 @@ private:
     /// Everything in output slots (the compact space's, then the vertices
     /// without bones).
     struct GroupPlan {
-        int count = 0;
-        bool parallel = false;                            // large enough for the thread pool
-        std::span<const std::uint32_t> vertices;          // loose (count 0: every vertex without bones)
+        bool parallel = false;  // large enough for the thread pool
+        // Every run and bone run of the group (the job's own lists are
+        // these, or in a partial frame those that moved).
         std::span<const skin::InfluenceRun> runs, boneRuns;
-        // Its job as planned: the arrays, counts and strides; each frame
-        // sets the runs (all, or those that moved), palette and normal
-        // method.
+        // Its job as planned: the loose vertices (count 0: every vertex
+        // without bones), arrays, influence count and stride; each frame
+        // sets the runs, palette and normal method.
         skin::SkinningJob job;
     };
 
