@@ -17,8 +17,11 @@ bool cpuHasAvx2Fma() noexcept {
 }
 bool cpuHasAvx512() noexcept {
 #if defined(__x86_64__) || defined(__i386__)
-    // Also checks that the OS saves the ZMM and mask state.
-    static const bool has = cpuHasAvx2Fma() && __builtin_cpu_supports("avx512f");
+    // Also checks that the OS saves the ZMM and mask state. VL: the kernels
+    // take a run's last eight vertices or fewer in 256-bit registers with
+    // the AVX-512 forms (every AVX-512 core since Skylake-SP has it).
+    static const bool has =
+        cpuHasAvx2Fma() && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl");
     return has;
 #else
     return false;
