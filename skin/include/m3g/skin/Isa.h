@@ -12,9 +12,10 @@ enum class Isa {
     Scalar,  ///< plain C++ loops (whatever the compiler makes of them)
     Sse2,    ///< 128-bit SSE2 intrinsics (x86 only)
     Avx2,    ///< 256-bit AVX2 + FMA intrinsics (x86 CPUs that report both)
-    /// AVX-512F for the skinning run kernel (sixteen vertices a step), the
-    /// AVX2 paths for everything else (x86 CPUs that report AVX-512F, AVX2
-    /// and FMA)
+    /// AVX-512F and VL for the skinning run and bone-run kernels (sixteen
+    /// vertices a step, a run's last eight or fewer in 256-bit registers),
+    /// the AVX2 paths for everything else (x86 CPUs that report AVX-512F,
+    /// AVX-512VL, AVX2 and FMA)
     Avx512,
 };
 
