@@ -255,11 +255,14 @@ M3G_AVX512_INLINE void skinBoneBlock(const SkinningJob& j, const Inputs<Planes>&
     if (stride == 4) {
         // The common table (four slots): the 4W floats in four registers,
         // slot k picked by two permutes and a blend (a gather costs several
-        // times that on current cores).
+        // times that on current cores). Only the table's floats are read: its
+        // last row may hold just the used slots (SkinningJob::validate).
         V q[4];
+        const std::size_t have = j.boneWeights.size() - v * stride;
+        const std::size_t floats = 4 * lanes < have ? 4 * lanes : have;
 #pragma GCC unroll 4
         for (int i = 0; i < 4; ++i) {
-            const std::size_t floats = 4 * lanes, from = static_cast<std::size_t>(W) * static_cast<std::size_t>(i);
+            const std::size_t from = static_cast<std::size_t>(W) * static_cast<std::size_t>(i);
             q[i] = L::load(laneMask<W>(floats > from ? floats - from : 0), weights + from);
         }
         constexpr auto upperHalf = static_cast<typename L::M>(((1u << W) - 1u) & ~((1u << (W / 2)) - 1u));

@@ -11,6 +11,9 @@
 #include <string>
 #include <vector>
 
+#include <sys/mman.h>
+#include <unistd.h>
+
 #include "SkinRandomMesh.h"
 #include "SkinReference.h"
 
@@ -498,6 +501,101 @@ TEST(SkinningJob, BoneRunsBlendEachVertexsOwnWeights) {
                             EXPECT_EQ(nout[v * 3 + c], sentinel) << what << " normal written";
                         }
                     }
+                }
+            }
+        }
+    }
+}
+
+/// `count` floats that end where an inaccessible page begins: a read past
+/// the last one faults, so a kernel reading weights the table does not
+/// have fails the test whatever the build (not only under ASan).
+class GuardedFloats {
+public:
+    explicit GuardedFloats(std::size_t count) : count_(count) {
+        const auto page = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+        const std::size_t bytes = (count * sizeof(float) + page - 1) / page * page;
+        size_ = bytes + page;
+        base_ = mmap(nullptr, size_, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        if (base_ == MAP_FAILED || mprotect(static_cast<char*>(base_) + bytes, page, PROT_NONE) != 0) {
+            ADD_FAILURE() << "mmap/mprotect for the guarded weights failed";
+            base_ = nullptr;
+            return;
+        }
+        data_ = reinterpret_cast<float*>(static_cast<char*>(base_) + bytes) - count;
+    }
+    ~GuardedFloats() {
+        if (base_) munmap(base_, size_);
+    }
+    GuardedFloats(const GuardedFloats&) = delete;
+    GuardedFloats& operator=(const GuardedFloats&) = delete;
+    bool ok() const { return base_ != nullptr; }
+    std::span<float> span() { return {data_, count_}; }
+
+private:
+    void* base_ = nullptr;
+    std::size_t size_ = 0;
+    float* data_ = nullptr;
+    std::size_t count_;
+};
+
+// A bone run at the end of the weight table, with more vertices after it
+// than the table has rows (the compact space's unboned vertices follow
+// its influenced ones and have no weights): the run's last block reads no
+// weights past the table, on every ISA, with whole rows and with a last
+// row that holds only the used slots; the vertices after the run are not
+// written. (The AVX2 kernel once loaded the tail's block from the tail's
+// first vertex whenever the inputs held eight more, reading four rows past
+// the table here: the guard page turns that into a fault.)
+TEST(SkinningJob, BoneRunTailsReadNoWeightsPastTheTable) {
+    const std::vector<PaletteEntry> pal = m3gtest::paletteAtRestIdentity(
+        {{1, 0, 0, 10, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}, {1, 0, 0, 0, 0, 1, 0, 20, 0, 0, 1, 0, 0, 0, 0, 1}});
+    const std::size_t n = 24, rows = 12;
+    const std::vector<InfluenceRun> boneRun{{0, static_cast<std::uint32_t>(rows), 0}};
+    std::vector<float> in, nin;
+    for (std::size_t v = 0; v < n; ++v) {
+        const float x = static_cast<float>(v);
+        in.insert(in.end(), {x, -x, 0.5f * x});
+        nin.insert(nin.end(), {0.0f, 3.0f, 4.0f});
+    }
+    for (int stride : {4, 3, 2}) {
+        for (bool partialLastRow : {false, true}) {
+            const auto s = static_cast<std::size_t>(stride);
+            const std::size_t floats = partialLastRow ? (rows - 1) * s + 2 : rows * s;
+            std::vector<std::int32_t> bones(floats, -1);
+            GuardedFloats weights(floats);
+            ASSERT_TRUE(weights.ok());
+            const std::span<float> w = weights.span();
+            std::fill(w.begin(), w.end(), 0.0f);
+            for (std::size_t v = 0; v < rows; ++v) {
+                bones[v * s] = 0;
+                bones[v * s + 1] = 1;
+                w[v * s] = static_cast<float>(v + 1) / 70.0f;
+                w[v * s + 1] = 1.0f - w[v * s];
+            }
+            for (Isa isa : {Isa::Scalar, Isa::Sse2, Isa::Avx2, Isa::Avx512}) {
+                if (!isaSupported(isa)) continue;
+                const float sentinel = -7.25f;
+                std::vector<float> out(n * 3, sentinel), nout(n * 3, sentinel);
+                SkinningJob job = m3gtest::arraysJob({}, {}, n, 2, stride, bones, {}, pal, in, nin, out, nout, isa);
+                job.boneWeights = w;
+                job.boneRuns = boneRun;
+                ASSERT_TRUE(job.run()) << isaName(isa);
+                for (std::size_t v = 0; v < n; ++v) {
+                    const std::string what = std::string(isaName(isa)) + ", stride " + std::to_string(stride) +
+                                             (partialLastRow ? ", partial last row" : "") + ", vertex " +
+                                             std::to_string(v);
+                    if (v >= rows) {
+                        EXPECT_EQ(out[v * 3], sentinel) << what << " written";
+                        EXPECT_EQ(nout[v * 3], sentinel) << what << " normal written";
+                        continue;
+                    }
+                    const float x = static_cast<float>(v), wv = static_cast<float>(v + 1) / 70.0f;
+                    EXPECT_NEAR(out[v * 3], x + 10 * wv, 1e-4f) << what;
+                    EXPECT_NEAR(out[v * 3 + 1], -x + 20 * (1 - wv), 1e-4f) << what;
+                    EXPECT_NEAR(out[v * 3 + 2], 0.5f * x, 1e-4f) << what;
+                    EXPECT_NEAR(nout[v * 3 + 1], 0.6f, 1e-6f) << what;
+                    EXPECT_NEAR(nout[v * 3 + 2], 0.8f, 1e-6f) << what;
                 }
             }
         }
