@@ -725,15 +725,15 @@ M3G_AVX2 void skinRuns(const SkinningJob& j, std::size_t begin, std::size_t end)
 // run's whole eights counted from its first vertex (a block cut by a chunk
 // is computed whole and stores only its lanes in the chunk); the run's last
 // vertices (fewer than eight) take one more whole block, loaded from the
-// eight vertices at the tail's first or, at the end of the arrays (inputs
-// or weights, whichever ends first), the last eight (the lanes outside the
-// run are read, weighed with the run's entries and not stored), so they
-// cost a block load and not a lane-by-lane gather (measured slower) nor the
-// list kernel (test.m3g 7.75 -> 6.96 us held to AVX2: its bone runs average
-// ten vertices). Only arrays shorter than a block (or a weight table whose
-// last row is partial) send a tail to the list kernel. Which kernel a vertex takes
-// depends only on its place in its run and the array length, so chunking
-// does not change its bits.
+// eight vertices at the tail's first or, where the inputs or the weights
+// end sooner, the run's last eight (the lanes outside the run are read,
+// weighed with the run's entries and not stored), so they cost a block
+// load and not a lane-by-lane gather (measured slower) nor the list kernel
+// (test.m3g 7.75 -> 6.96 us held to AVX2: its bone runs average ten
+// vertices). Only a run ending before vertex 8, or in a weight table's
+// partial last row, sends its tail to the list kernel. Which kernel a
+// vertex takes depends only on its run, so chunking does not change its
+// bits.
 
 /// Row r (coefficients 4r .. 4r+3) of the lanes' blended matrices.
 template <int K>
@@ -830,9 +830,6 @@ M3G_AVX2 void skinBoneRuns(const SkinningJob& j, std::size_t begin, std::size_t 
         skinBlocks<K>(list, 0, tailCount);
         tailCount = 0;
     };
-    // The vertices a whole block may cover: every lane's inputs and weights.
-    const std::size_t weightRows = c.stride > 0 ? c.weightCount / c.stride : 0;
-    const std::size_t blockLimit = j.vertexCount < weightRows ? j.vertexCount : weightRows;
     RunPieces pieces(j.boneRuns, begin, end);
     std::size_t runFirst, first, count;
     while (pieces.next(runFirst, first, count)) {
@@ -850,12 +847,17 @@ M3G_AVX2 void skinBoneRuns(const SkinningJob& j, std::size_t begin, std::size_t 
             const std::size_t hi = stop - b < 8 ? stop - b : 8;
             skinBoneBlock<K, NormalsFromPositions, Planes>(j, c, e, b, lo, hi);
         }
-        // The tail (see above): one block, only its lanes stored. Its eight
-        // lanes must lie inside the inputs and the weights (which may end
-        // before the inputs: the compact space's unboned vertices have none).
+        // The tail (see above): one block, only its lanes stored, whether it
+        // does decided by the run alone (so not by the chunking). Its eight
+        // lanes must have inputs and whole weight rows (the weights may end
+        // before the inputs: the compact space's unboned vertices have none):
+        // from the tail's first vertex when those eight do, else the run's
+        // last eight, which lie before its end.
         const std::size_t tailFirst = first > wholeEnd ? first : wholeEnd;
-        if (tailFirst < stop && runFirst + pieces.runLength() <= blockLimit && blockLimit >= 8) {
-            const std::size_t base = tailFirst + 8 <= blockLimit ? tailFirst : blockLimit - 8;
+        const std::size_t runEnd = runFirst + pieces.runLength();
+        if (tailFirst < stop && runEnd >= 8 && runEnd * c.stride <= c.weightCount) {
+            const bool fromTail = tailFirst + 8 <= j.vertexCount && (tailFirst + 8) * c.stride <= c.weightCount;
+            const std::size_t base = fromTail ? tailFirst : runEnd - 8;
             skinBoneBlock<K, NormalsFromPositions, Planes>(j, c, e, base, tailFirst - base, stop - base);
             continue;
         }
