@@ -40,16 +40,21 @@ namespace {
 constexpr std::size_t kParallelVertices = 16384;
 constexpr std::size_t kGrain = 4096;
 
-/// Whether two palette entries differ in any bit: a fixed-size loop the
-/// compiler turns into a few vector compares (memcmp was a library call
-/// per bone per frame).
+/// Whether two palette entries differ in any bit: eight bytes at a time
+/// straight from the entries, which the compiler turns into a few vector
+/// compares (memcmp was a library call per bone per frame; copies into
+/// local arrays went through the stack).
 bool entryDiffers(const skin::PaletteEntry& a, const skin::PaletteEntry& b) noexcept {
-    constexpr std::size_t words = sizeof(skin::PaletteEntry) / sizeof(std::uint32_t);
-    std::uint32_t x[words], y[words];
-    std::memcpy(x, &a, sizeof x);
-    std::memcpy(y, &b, sizeof y);
-    std::uint32_t diff = 0;
-    for (std::size_t i = 0; i < words; ++i) diff |= x[i] ^ y[i];
+    constexpr std::size_t words = sizeof(skin::PaletteEntry) / sizeof(std::uint64_t);
+    const auto* pa = reinterpret_cast<const unsigned char*>(&a);
+    const auto* pb = reinterpret_cast<const unsigned char*>(&b);
+    std::uint64_t diff = 0;
+    for (std::size_t i = 0; i < words; ++i) {
+        std::uint64_t x, y;
+        std::memcpy(&x, pa + i * sizeof x, sizeof x);
+        std::memcpy(&y, pb + i * sizeof y, sizeof y);
+        diff |= x ^ y;
+    }
     return diff != 0;
 }
 
@@ -317,10 +322,16 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
     entryChanged_.assign(bones, 1);
     if (kept) {
         const auto composed = boneTransforms_.changedBones();
+        // Through local pointers: stores to entryChanged_ would otherwise
+        // make the compiler reload every vector's data pointer per bone.
+        const skin::PaletteEntry* before = palette_.data();
+        const skin::PaletteEntry* after = newPalette_.data();
+        std::uint8_t* entryChanged = entryChanged_.data();
         std::size_t changed = 0;
         for (std::size_t b = 0; b < bones; ++b) {
-            entryChanged_[b] = composed[b] && entryDiffers(palette_[b], newPalette_[b]);
-            changed += entryChanged_[b];
+            const bool differs = composed[b] && entryDiffers(before[b], after[b]);
+            entryChanged[b] = differs;
+            changed += differs;
         }
         if (changed == 0) return false;
         // Every entry changed (the common animated frame): no run to leave

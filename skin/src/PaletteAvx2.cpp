@@ -129,21 +129,21 @@ M3G_AVX2 inline void pairOfBones(const PaletteJob& job, std::size_t b0, std::siz
     // plus m[i] . (bx, by, bz, 0) in w (skipped for 1 and 0, which leave a
     // non-finite row as it is rather than NaN).
     if (foldScaleBias) foldPositionScaleBias(job, m);
-    PaletteEntry& e0 = job.output[b0];
-    _mm_storeu_ps(e0.position, _mm256_castps256_ps128(m[0]));
-    _mm_storeu_ps(e0.position + 4, _mm256_castps256_ps128(m[1]));
-    _mm_storeu_ps(e0.position + 8, _mm256_castps256_ps128(m[2]));
-    _mm_storeu_ps(e0.normal, _mm256_castps256_ps128(n0));
-    _mm_storeu_ps(e0.normal + 4, _mm256_castps256_ps128(n1));
-    _mm_storeu_ps(e0.normal + 8, _mm256_castps256_ps128(n2));
+    // An entry as three 32-byte stores (P0|P1, P2|N0, N1|N2): the kernels
+    // read each entry right after this with 32-byte loads (the AVX-512 run
+    // kernel too), which a store can forward only if it holds the whole
+    // load; from 16-byte row stores every such load waited for them to
+    // retire (measured at a few percent of a frame of one short run per
+    // mesh, otokka_jump2).
+    float* e0 = reinterpret_cast<float*>(job.output.data() + b0);
+    _mm256_storeu_ps(e0, _mm256_permute2f128_ps(m[0], m[1], 0x20));
+    _mm256_storeu_ps(e0 + 8, _mm256_permute2f128_ps(m[2], n0, 0x20));
+    _mm256_storeu_ps(e0 + 16, _mm256_permute2f128_ps(n1, n2, 0x20));
     if (!storeHigh) return;
-    PaletteEntry& e1 = job.output[b1];
-    _mm_storeu_ps(e1.position, _mm256_extractf128_ps(m[0], 1));
-    _mm_storeu_ps(e1.position + 4, _mm256_extractf128_ps(m[1], 1));
-    _mm_storeu_ps(e1.position + 8, _mm256_extractf128_ps(m[2], 1));
-    _mm_storeu_ps(e1.normal, _mm256_extractf128_ps(n0, 1));
-    _mm_storeu_ps(e1.normal + 4, _mm256_extractf128_ps(n1, 1));
-    _mm_storeu_ps(e1.normal + 8, _mm256_extractf128_ps(n2, 1));
+    float* e1 = reinterpret_cast<float*>(job.output.data() + b1);
+    _mm256_storeu_ps(e1, _mm256_permute2f128_ps(m[0], m[1], 0x31));
+    _mm256_storeu_ps(e1 + 8, _mm256_permute2f128_ps(m[2], n0, 0x31));
+    _mm256_storeu_ps(e1 + 16, _mm256_permute2f128_ps(n1, n2, 0x31));
 }
 
 }  // namespace

@@ -108,18 +108,24 @@ M3G_AVX512_INLINE bool runRows(const SkinningJob& j, const std::int32_t* bi, con
                                float (&rows)[24]) noexcept {
     const int count = K > 0 ? K : j.influenceCount;
     const std::size_t bones = j.palette.size();
-    __m512 a = _mm512_setzero_ps();  // floats 0-15
-    __m256 b = _mm256_setzero_ps();  // floats 16-23
+    // 32-byte loads, as the palette kernel stores an entry (PaletteAvx2.cpp):
+    // a 64-byte load of an entry just written could not be forwarded.
+    __m256 a = _mm256_setzero_ps();  // floats 0-7
+    __m256 b = _mm256_setzero_ps();  // floats 8-15
+    __m256 c = _mm256_setzero_ps();  // floats 16-23
 #pragma GCC unroll 4
     for (int k = 0; k < count; ++k) {
         const auto bone = static_cast<std::uint32_t>(bi[k]);
         if (bone >= bones) return false;
         const float* e = reinterpret_cast<const float*>(j.palette.data() + bone);
-        a = _mm512_fmadd_ps(_mm512_set1_ps(bw[k]), _mm512_loadu_ps(e), a);
-        b = _mm256_fmadd_ps(_mm256_set1_ps(bw[k]), _mm256_loadu_ps(e + 16), b);
+        const __m256 w = _mm256_set1_ps(bw[k]);
+        a = _mm256_fmadd_ps(w, _mm256_loadu_ps(e), a);
+        b = _mm256_fmadd_ps(w, _mm256_loadu_ps(e + 8), b);
+        c = _mm256_fmadd_ps(w, _mm256_loadu_ps(e + 16), c);
     }
-    _mm512_storeu_ps(rows, a);
-    _mm256_storeu_ps(rows + 16, b);
+    _mm256_storeu_ps(rows, a);
+    _mm256_storeu_ps(rows + 8, b);
+    _mm256_storeu_ps(rows + 16, c);
     if (!isIdentityScaleBias(j.positionScale, j.positionBias)) {
         // P (s p + b) = (P s) p + (P b), row by row, once per run.
         const float s = j.positionScale;
