@@ -267,9 +267,12 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
     if (tableChanged) {
         valid_ = false;
         // Every vertex with influences goes to the compact space, sorted by
-        // influence set: the outputs stay in that order (order_).
+        // influence set: the outputs stay in that order (order_). Short
+        // runs beside a bone run of their bones join it where this CPU's
+        // kernels have bone runs (InfluencePartition::runBlock).
         partition_.build(table.bones(), table.weights(), table.maxInfluences(), n,
-                         skin::InfluencePartition::kNoInPlaceRuns);
+                         skin::InfluencePartition::kNoInPlaceRuns,
+                         skin::InfluencePartition::runBlock(skin::Isa::Auto));
         tableRevision_ = table.revision();
         ++inputStamp_;
         planOrder(n);

@@ -216,7 +216,7 @@ void InfluencePartition::build(std::span<const std::int32_t> boneIndices, int st
 }
 
 void InfluencePartition::build(std::span<const std::int32_t> boneIndices, std::span<const float> boneWeights,
-                               int stride, std::size_t vertexCount, std::size_t minRun) {
+                               int stride, std::size_t vertexCount, std::size_t minRun, std::size_t runBlock) {
     minRun = std::max(minRun, kMinRun);
     const int n = stride < 0 ? 0 : stride;
     const auto ns = static_cast<std::size_t>(n);
@@ -267,11 +267,19 @@ void InfluencePartition::build(std::span<const std::int32_t> boneIndices, std::s
         looseOffsets_[c + 1] = loose_.size();
         runOffsets_[c + 1] = runs_.size();
     }
-    buildCompact(boneIndices, boneWeights, weights);
+    buildCompact(boneIndices, boneWeights, weights, runBlock);
+}
+
+std::size_t InfluencePartition::runBlock(Isa isa) noexcept {
+    switch (resolveIsa(isa)) {
+        case Isa::Avx512: return 16;
+        case Isa::Avx2: return 8;
+        default: return 0;
+    }
 }
 
 void InfluencePartition::buildCompact(std::span<const std::int32_t> boneIndices, std::span<const float> boneWeights,
-                                      bool weights) {
+                                      bool weights, std::size_t runBlock) {
     const std::size_t ns = offsets_.size() - 2;
     compactOrder_.clear();
     compactBones_.clear();
@@ -323,8 +331,10 @@ void InfluencePartition::buildCompact(std::span<const std::int32_t> boneIndices,
             return static_cast<std::uint32_t>(compactOrder_.size() - 1);
         };
         // One set of bones at a time: equal slots are neighbours; runs of
-        // kMinRun or more are runs; the set's other vertices form a bone run
-        // when there are kMinRun or more, else they are loose. The group's
+        // kMinRun or more are runs (of runBlock or more, or the whole set:
+        // a shorter one goes with the set's other vertices); the set's
+        // other vertices form a bone run when there are kMinRun or more,
+        // else they are loose. The group's
         // runs are laid out first, then its bone runs, then its loose
         // vertices, so that each kind is consecutive in the compact arrays
         // (the list kernel, which takes bone runs on CPUs without a bone-run
@@ -348,7 +358,8 @@ void InfluencePartition::buildCompact(std::span<const std::int32_t> boneIndices,
                 while (e < setEnd && same(sorted[q], sorted[e])) ++e;
                 auto from = sorted.begin() + static_cast<std::ptrdiff_t>(q);
                 auto to = sorted.begin() + static_cast<std::ptrdiff_t>(e);
-                if (e - q >= kMinRun) {
+                const std::size_t length = e - q;
+                if (length >= kMinRun && (length >= runBlock || length == setEnd - i)) {
                     runVertices.insert(runVertices.end(), from, to);
                     runLengths.push_back(static_cast<std::uint32_t>(e - q));
                 } else {

@@ -29,9 +29,9 @@ const Isa kIsas[] = {Isa::Scalar, Isa::Sse2, Isa::Avx2, Isa::Avx512};
 /// (scatterXyz). Outputs start as a sentinel.
 void skinCompact(const m3gtest::RandomMesh& m, const std::vector<PaletteEntry>& pal, Isa isa,
                  std::vector<float>& pos, std::vector<float>& nrm, ThreadPool* pool = nullptr,
-                 std::size_t grain = 4096) {
+                 std::size_t grain = 4096, std::size_t runBlock = 0) {
     InfluencePartition part;
-    part.build(m.table.bones(), m.table.weights(), m.n, m.vertices);
+    part.build(m.table.bones(), m.table.weights(), m.n, m.vertices, InfluencePartition::kMinRun, runBlock);
     pos.assign(m.vertices * 3, -999.0f);
     nrm.assign(m.vertices * 3, -999.0f);
     const auto order = part.compactOrder();
@@ -124,71 +124,91 @@ struct ShuffledMesh {
 // The compact space holds exactly the loose vertices with influences, each
 // with its own slots; its runs share every slot; runs and loose positions
 // cover it once; sorting brings vertices with the same set together.
+// With a run block (InfluencePartition::runBlock), a compact run shorter
+// than it is the whole of its set of bones in its group.
 TEST(InfluencePartition, CompactSpaceSortsLooseVerticesByInfluenceSet) {
     for (std::uint32_t seed : {1u, 2u, 3u}) {
-        ShuffledMesh m(seed, 3001, 23, false);
-        InfluencePartition part;
-        part.build(m.bones, m.weights, m.n, m.vertices);
-        const auto order = part.compactOrder();
-        std::vector<std::uint32_t> loose;
-        for (int c = 1; c <= part.maxInfluences(); ++c)
-            loose.insert(loose.end(), part.loose(c).begin(), part.loose(c).end());
-        std::vector<std::uint32_t> sortedOrder(order.begin(), order.end());
-        std::sort(sortedOrder.begin(), sortedOrder.end());
-        std::sort(loose.begin(), loose.end());
-        ASSERT_EQ(loose, sortedOrder) << "seed " << seed;
-        ASSERT_EQ(part.compactBones().size(), order.size() * 4);
-        ASSERT_EQ(part.compactWeights().size(), order.size() * 4);
-        for (std::size_t i = 0; i < order.size(); ++i) {
-            // The vertex's own slots, as the table has them.
-            ASSERT_EQ(0, std::memcmp(&part.compactBones()[i * 4], &m.bones[order[i] * 4], 16)) << "compact " << i;
-            ASSERT_EQ(0, std::memcmp(&part.compactWeights()[i * 4], &m.weights[order[i] * 4], 16)) << "compact " << i;
-        }
-        // Loose vertices of a group never share every slot with kMinRun - 1
-        // others (those are runs).
-        std::vector<int> covered(order.size(), 0);
-        std::size_t inRuns = 0, inBoneRuns = 0;
-        for (int c = 1; c <= part.maxInfluences(); ++c) {
-            std::uint32_t start = 0;
-            for (const InfluenceRun& r : part.compactRuns(c)) {
-                ASSERT_EQ(r.start, start);
-                ASSERT_GE(r.vertexCount, InfluencePartition::kMinRun);
-                start += r.vertexCount;
-                inRuns += r.vertexCount;
-                for (std::uint32_t v = r.firstVertex; v < r.firstVertex + r.vertexCount; ++v) {
+        for (std::size_t runBlock : {std::size_t{0}, std::size_t{8}, std::size_t{16}}) {
+            SCOPED_TRACE("seed " + std::to_string(seed) + ", run block " + std::to_string(runBlock));
+            ShuffledMesh m(seed, 3001, 23, false);
+            InfluencePartition part;
+            part.build(m.bones, m.weights, m.n, m.vertices, InfluencePartition::kMinRun, runBlock);
+            const auto order = part.compactOrder();
+            std::vector<std::uint32_t> loose;
+            for (int c = 1; c <= part.maxInfluences(); ++c)
+                loose.insert(loose.end(), part.loose(c).begin(), part.loose(c).end());
+            std::vector<std::uint32_t> sortedOrder(order.begin(), order.end());
+            std::sort(sortedOrder.begin(), sortedOrder.end());
+            std::sort(loose.begin(), loose.end());
+            ASSERT_EQ(loose, sortedOrder) << "seed " << seed;
+            ASSERT_EQ(part.compactBones().size(), order.size() * 4);
+            ASSERT_EQ(part.compactWeights().size(), order.size() * 4);
+            for (std::size_t i = 0; i < order.size(); ++i) {
+                // The vertex's own slots, as the table has them.
+                ASSERT_EQ(0, std::memcmp(&part.compactBones()[i * 4], &m.bones[order[i] * 4], 16)) << "compact " << i;
+                ASSERT_EQ(0, std::memcmp(&part.compactWeights()[i * 4], &m.weights[order[i] * 4], 16)) << "compact " << i;
+            }
+            // Loose vertices of a group never share every slot with kMinRun - 1
+            // others (those are runs).
+            std::vector<int> covered(order.size(), 0);
+            std::size_t inRuns = 0, inBoneRuns = 0;
+            for (int c = 1; c <= part.maxInfluences(); ++c) {
+                std::uint32_t start = 0;
+                for (const InfluenceRun& r : part.compactRuns(c)) {
+                    ASSERT_EQ(r.start, start);
+                    ASSERT_GE(r.vertexCount, InfluencePartition::kMinRun);
+                    start += r.vertexCount;
+                    inRuns += r.vertexCount;
+                    for (std::uint32_t v = r.firstVertex; v < r.firstVertex + r.vertexCount; ++v) {
+                        ++covered[v];
+                        ASSERT_EQ(0, std::memcmp(&part.compactBones()[v * 4], &part.compactBones()[r.firstVertex * 4], 16));
+                        ASSERT_EQ(0, std::memcmp(&part.compactWeights()[v * 4],
+                                                 &part.compactWeights()[r.firstVertex * 4], 16));
+                    }
+                }
+                // Bone runs: consecutive, every vertex with the first one's bones
+                // (its own weights); sets of fewer than kMinRun such vertices
+                // stay loose, so no loose vertex shares its bones with
+                // kMinRun - 1 other loose ones of its group.
+                std::uint32_t boneStart = 0;
+                for (const InfluenceRun& r : part.compactBoneRuns(c)) {
+                    ASSERT_EQ(r.start, boneStart);
+                    ASSERT_GE(r.vertexCount, InfluencePartition::kMinRun);
+                    boneStart += r.vertexCount;
+                    inBoneRuns += r.vertexCount;
+                    for (std::uint32_t v = r.firstVertex; v < r.firstVertex + r.vertexCount; ++v) {
+                        ++covered[v];
+                        ASSERT_EQ(0, std::memcmp(&part.compactBones()[v * 4], &part.compactBones()[r.firstVertex * 4],
+                                                 4 * static_cast<std::size_t>(c)));
+                    }
+                }
+                std::map<std::vector<std::int32_t>, int> looseSets;
+                for (std::uint32_t v : part.compactLoose(c)) {
                     ++covered[v];
-                    ASSERT_EQ(0, std::memcmp(&part.compactBones()[v * 4], &part.compactBones()[r.firstVertex * 4], 16));
-                    ASSERT_EQ(0, std::memcmp(&part.compactWeights()[v * 4],
-                                             &part.compactWeights()[r.firstVertex * 4], 16));
+                    const std::int32_t* b = &part.compactBones()[v * 4];
+                    ASSERT_LT(++looseSets[std::vector<std::int32_t>(b, b + c)], static_cast<int>(InfluencePartition::kMinRun))
+                        << "compact " << v;
+                }
+                // A run shorter than the block: no other vertex of the group
+                // has its bones.
+                auto bonesOf = [&](std::uint32_t v) {
+                    const std::int32_t* b = &part.compactBones()[v * 4];
+                    return std::vector<std::int32_t>(b, b + c);
+                };
+                std::map<std::vector<std::int32_t>, std::size_t> setSizes;
+                for (const InfluenceRun& r : part.compactRuns(c)) setSizes[bonesOf(r.firstVertex)] += r.vertexCount;
+                for (const InfluenceRun& r : part.compactBoneRuns(c)) setSizes[bonesOf(r.firstVertex)] += r.vertexCount;
+                for (std::uint32_t v : part.compactLoose(c)) ++setSizes[bonesOf(v)];
+                for (const InfluenceRun& r : part.compactRuns(c)) {
+                    if (r.vertexCount < runBlock) {
+                        ASSERT_EQ(setSizes[bonesOf(r.firstVertex)], r.vertexCount) << "run at " << r.firstVertex;
+                    }
                 }
             }
-            // Bone runs: consecutive, every vertex with the first one's bones
-            // (its own weights); sets of fewer than kMinRun such vertices
-            // stay loose, so no loose vertex shares its bones with
-            // kMinRun - 1 other loose ones of its group.
-            std::uint32_t boneStart = 0;
-            for (const InfluenceRun& r : part.compactBoneRuns(c)) {
-                ASSERT_EQ(r.start, boneStart);
-                ASSERT_GE(r.vertexCount, InfluencePartition::kMinRun);
-                boneStart += r.vertexCount;
-                inBoneRuns += r.vertexCount;
-                for (std::uint32_t v = r.firstVertex; v < r.firstVertex + r.vertexCount; ++v) {
-                    ++covered[v];
-                    ASSERT_EQ(0, std::memcmp(&part.compactBones()[v * 4], &part.compactBones()[r.firstVertex * 4],
-                                             4 * static_cast<std::size_t>(c)));
-                }
-            }
-            std::map<std::vector<std::int32_t>, int> looseSets;
-            for (std::uint32_t v : part.compactLoose(c)) {
-                ++covered[v];
-                const std::int32_t* b = &part.compactBones()[v * 4];
-                ASSERT_LT(++looseSets[std::vector<std::int32_t>(b, b + c)], static_cast<int>(InfluencePartition::kMinRun))
-                    << "compact " << v;
-            }
+            for (std::size_t i = 0; i < covered.size(); ++i) ASSERT_EQ(1, covered[i]) << "compact " << i;
+            EXPECT_GT(inRuns, 0u);
+            EXPECT_GT(inBoneRuns, 0u);
         }
-        for (std::size_t i = 0; i < covered.size(); ++i) ASSERT_EQ(1, covered[i]) << "compact " << i;
-        EXPECT_GT(inRuns, 0u) << "seed " << seed;
-        EXPECT_GT(inBoneRuns, 0u) << "seed " << seed;
     }
     // Without weights there is no compact space.
     ShuffledMesh m(9, 100, 5, false);
@@ -198,6 +218,69 @@ TEST(InfluencePartition, CompactSpaceSortsLooseVerticesByInfluenceSet) {
     EXPECT_TRUE(part.compactRuns(1).empty());
     EXPECT_TRUE(part.compactLoose(1).empty());
     EXPECT_TRUE(part.compactBoneRuns(1).empty());
+}
+
+// Three sets of two bones, laid out by hand: {0, 1} with five vertices of
+// equal weights and three of their own, {2, 3} with five of equal weights
+// only, {4, 5} with nine of equal weights and four of their own. Without a
+// run block every equal stretch of kMinRun or more is a run; with one,
+// {0, 1}'s five join its bone run (the three alone would stay loose), {2, 3}'s
+// five stay a run (the whole set), and {4, 5}'s nine stay a run at a block
+// of eight but join the bone run at sixteen.
+TEST(InfluencePartition, ShortRunsJoinTheBoneRunOfTheirSetWithARunBlock) {
+    std::vector<std::int32_t> bones;
+    std::vector<float> weights;
+    auto add = [&](int b0, int b1, float w0, int count) {
+        for (int i = 0; i < count; ++i) {
+            bones.insert(bones.end(), {b0, b1});
+            weights.insert(weights.end(), {w0, 1.0f - w0});
+        }
+    };
+    add(0, 1, 0.5f, 5);
+    add(0, 1, 0.1f, 1);
+    add(0, 1, 0.2f, 1);
+    add(0, 1, 0.3f, 1);
+    add(2, 3, 0.25f, 5);
+    add(4, 5, 0.75f, 9);
+    for (float w : {0.15f, 0.35f, 0.45f, 0.55f}) add(4, 5, w, 1);
+    const std::size_t vertices = bones.size() / 2;
+    struct Layout {
+        std::vector<std::uint32_t> runs, boneRuns;
+        std::size_t loose;
+    };
+    auto layout = [&](std::size_t runBlock) {
+        InfluencePartition part;
+        part.build(bones, weights, 2, vertices, InfluencePartition::kNoInPlaceRuns, runBlock);
+        Layout l;
+        for (const InfluenceRun& r : part.compactRuns(2)) l.runs.push_back(r.vertexCount);
+        for (const InfluenceRun& r : part.compactBoneRuns(2)) l.boneRuns.push_back(r.vertexCount);
+        l.loose = part.compactLoose(2).size();
+        EXPECT_TRUE(part.compactRuns(1).empty());
+        return l;
+    };
+    using V = std::vector<std::uint32_t>;
+    const Layout none = layout(0);
+    EXPECT_EQ(none.runs, (V{5, 5, 9}));
+    EXPECT_EQ(none.boneRuns, (V{4}));
+    EXPECT_EQ(none.loose, 3u);
+    const Layout eight = layout(8);
+    EXPECT_EQ(eight.runs, (V{5, 9}));
+    EXPECT_EQ(eight.boneRuns, (V{8, 4}));
+    EXPECT_EQ(eight.loose, 0u);
+    const Layout sixteen = layout(16);
+    EXPECT_EQ(sixteen.runs, (V{5}));
+    EXPECT_EQ(sixteen.boneRuns, (V{8, 13}));
+    EXPECT_EQ(sixteen.loose, 0u);
+    EXPECT_EQ(InfluencePartition::runBlock(Isa::Scalar), 0u);
+    if (isaSupported(Isa::Sse2)) {
+        EXPECT_EQ(InfluencePartition::runBlock(Isa::Sse2), 0u);
+    }
+    if (isaSupported(Isa::Avx2)) {
+        EXPECT_EQ(InfluencePartition::runBlock(Isa::Avx2), 8u);
+    }
+    if (isaSupported(Isa::Avx512)) {
+        EXPECT_EQ(InfluencePartition::runBlock(Isa::Avx512), 16u);
+    }
 }
 
 // Random meshes with 1-4 influences whose vertices share bones and weights
@@ -230,22 +313,26 @@ TEST(SkinningJob, CompactSpaceKeepsTheMeshOrderAndAgreesWithTheReference) {
         for (Isa isa : kIsas) {
             if (!isaSupported(isa)) continue;
             const std::string what = std::string(isaName(isa)) + ", seed " + std::to_string(seed);
-            std::vector<float> pos, nrm, listPos, listNrm;
-            skinCompact(m, pal, isa, pos, nrm);
-            m3gtest::skinAll(m, pal, isa, listPos, listNrm);
-            EXPECT_TRUE(m3gtest::closeXyz(pos, ref.positions)) << what << " positions";
-            EXPECT_TRUE(m3gtest::closeXyz(nrm, ref.normals)) << what << " normals";
-            for (std::size_t i = 0; i < pos.size(); ++i) {
-                ASSERT_NEAR(pos[i], listPos[i], 2e-5f * std::max(1.0f, std::abs(listPos[i]))) << what << " " << i;
-                ASSERT_NEAR(nrm[i], listNrm[i], 2e-6f) << what << " normal " << i;
-            }
-            for (int threads : {1, 2}) {
-                ThreadPool pool(threads);
-                for (std::size_t grain : {1u, 5u, 12u, 256u}) {
-                    std::vector<float> p2, n2;
-                    skinCompact(m, pal, isa, p2, n2, &pool, grain);
-                    EXPECT_EQ(0, std::memcmp(pos.data(), p2.data(), pos.size() * sizeof(float))) << what;
-                    EXPECT_EQ(0, std::memcmp(nrm.data(), n2.data(), nrm.size() * sizeof(float))) << what;
+            // Without a run block, and with the ISA's (short runs in bone runs).
+            for (std::size_t runBlock : {std::size_t{0}, InfluencePartition::runBlock(isa)}) {
+                const std::string at = what + ", run block " + std::to_string(runBlock);
+                std::vector<float> pos, nrm, listPos, listNrm;
+                skinCompact(m, pal, isa, pos, nrm, nullptr, 4096, runBlock);
+                m3gtest::skinAll(m, pal, isa, listPos, listNrm);
+                EXPECT_TRUE(m3gtest::closeXyz(pos, ref.positions)) << at << " positions";
+                EXPECT_TRUE(m3gtest::closeXyz(nrm, ref.normals)) << at << " normals";
+                for (std::size_t i = 0; i < pos.size(); ++i) {
+                    ASSERT_NEAR(pos[i], listPos[i], 2e-5f * std::max(1.0f, std::abs(listPos[i]))) << at << " " << i;
+                    ASSERT_NEAR(nrm[i], listNrm[i], 2e-6f) << at << " normal " << i;
+                }
+                for (int threads : {1, 2}) {
+                    ThreadPool pool(threads);
+                    for (std::size_t grain : {1u, 5u, 12u, 256u}) {
+                        std::vector<float> p2, n2;
+                        skinCompact(m, pal, isa, p2, n2, &pool, grain, runBlock);
+                        EXPECT_EQ(0, std::memcmp(pos.data(), p2.data(), pos.size() * sizeof(float))) << at;
+                        EXPECT_EQ(0, std::memcmp(nrm.data(), n2.data(), nrm.size() * sizeof(float))) << at;
+                    }
                 }
             }
         }

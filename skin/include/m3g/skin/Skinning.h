@@ -161,9 +161,23 @@ public:
     void build(std::span<const std::int32_t> boneIndices, int stride, std::size_t vertexCount);
     /// The same, and runs of `minRun` or more (>= kMinRun) found by
     /// comparing the bones and `boneWeights` (same layout and size as
-    /// boneIndices) of neighbouring vertices.
+    /// boneIndices) of neighbouring vertices. In the compact space, a run
+    /// shorter than `runBlock` vertices is kept as a run only where it is
+    /// the whole of its set of bones; otherwise its vertices join the set's
+    /// bone run (runBlock(isa) says why; 0, the default, keeps every run of
+    /// kMinRun or more).
     void build(std::span<const std::int32_t> boneIndices, std::span<const float> boneWeights, int stride,
-               std::size_t vertexCount, std::size_t minRun = kMinRun);
+               std::size_t vertexCount, std::size_t minRun = kMinRun, std::size_t runBlock = 0);
+
+    /// build()'s `runBlock` for the kernels of `isa` (resolved; Auto is
+    /// resolved here): the vertices of one block of its run kernel (16 for
+    /// Avx512, 8 for Avx2), 0 where it has no bone-run kernel (Sse2,
+    /// Scalar, which take bone runs as vertex lists). A run shorter than a
+    /// block costs its blend and a whole block however few its vertices;
+    /// beside a bone run of the same bones, the bone run takes them in the
+    /// lanes its own blocks leave over (test.m3g's two- and three-bone
+    /// sets: runs of 4-7 vertices beside bone runs; docs/skinning.md).
+    static std::size_t runBlock(Isa isa) noexcept;
 
     /// Largest group index (= stride after build()).
     int maxInfluences() const noexcept { return static_cast<int>(offsets_.size()) - 2; }
@@ -208,7 +222,8 @@ public:
     std::span<const std::uint32_t> compactLoose(int count) const noexcept;
 
 private:
-    void buildCompact(std::span<const std::int32_t> boneIndices, std::span<const float> boneWeights, bool weights);
+    void buildCompact(std::span<const std::int32_t> boneIndices, std::span<const float> boneWeights, bool weights,
+                      std::size_t runBlock);
 
     std::vector<std::uint32_t> vertices_;
     std::vector<std::size_t> offsets_;  // group c = [offsets_[c], offsets_[c + 1])
