@@ -132,9 +132,10 @@ M3G_AVX2 inline void pairOfBones(const PaletteJob& job, std::size_t b0, std::siz
     // An entry as three 32-byte stores (P0|P1, P2|N0, N1|N2): the kernels
     // read each entry right after this with 32-byte loads (the AVX-512 run
     // kernel too), which a store can forward only if it holds the whole
-    // load; from 16-byte row stores every such load waited for them to
-    // retire (measured at a few percent of a frame of one short run per
-    // mesh, otokka_jump2).
+    // load; from 16-byte row stores such a load waits for them to retire
+    // (in perf's profile of otokka_jump2, one mesh after another, the
+    // first read of each mesh's entry stood out; the frame gained about
+    // 1 %, docs/skinning.md).
     float* e0 = reinterpret_cast<float*>(job.output.data() + b0);
     _mm256_storeu_ps(e0, _mm256_permute2f128_ps(m[0], m[1], 0x20));
     _mm256_storeu_ps(e0 + 8, _mm256_permute2f128_ps(m[2], n0, 0x20));
