@@ -431,6 +431,12 @@ TEST(ObjectDump, SkinnedMeshBonesAndSkeleton) {
     EXPECT_EQ(layout.at("compactBoneRuns").get<int>(), 0);
     EXPECT_EQ(layout.at("compactBoneRunVertices").get<int>(), 0);
     EXPECT_EQ(layout.at("compactLooseVertices").get<int>(), 3);
+    // Which kernels the split is for, and their run block: 16 lanes with
+    // AVX-512, 8 with AVX2, none where bone runs are vertex lists.
+    const std::string kernels = layout.at("kernels").get<std::string>();
+    const int block = kernels == "avx512" ? 16 : kernels == "avx2" ? 8 : 0;
+    EXPECT_TRUE(kernels == "avx512" || kernels == "avx2" || kernels == "sse2" || kernels == "scalar") << kernels;
+    EXPECT_EQ(layout.at("runBlock").get<int>(), block) << kernels;
 }
 
 TEST(ObjectDump, BonesAndAlignmentTargetsOutsideReferencesAreIncluded) {

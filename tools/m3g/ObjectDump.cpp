@@ -357,6 +357,11 @@ struct Dumper {
         j["compactBoneRuns"] = boneRuns;
         j["compactBoneRunVertices"] = boneRunVertices;
         j["compactLooseVertices"] = compactLoose;
+        // The compact split depends on the kernels this CPU runs (short
+        // runs join their bone set's bone run where there is a bone-run
+        // kernel, InfluencePartition::runBlock): say which.
+        j["kernels"] = skin::isaName(skin::resolveIsa(skin::Isa::Auto));
+        j["runBlock"] = static_cast<int>(skin::InfluencePartition::runBlock(skin::Isa::Auto));
         return j;
     }
 
