@@ -270,9 +270,7 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         // influence set: the outputs stay in that order (order_). Short
         // runs beside a bone run of their bones join it where this CPU's
         // kernels have bone runs (InfluencePartition::runBlock).
-        partition_.build(table.bones(), table.weights(), table.maxInfluences(), n,
-                         skin::InfluencePartition::kNoInPlaceRuns,
-                         skin::InfluencePartition::runBlock(skin::Isa::Auto));
+        partition_.buildForKernels(table, n);
         tableRevision_ = table.revision();
         ++inputStamp_;
         planOrder(n);

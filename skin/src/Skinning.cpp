@@ -4,6 +4,7 @@
 #include <cstring>
 #include <iterator>
 
+#include <m3g/skin/InfluenceTable.h>
 #include <m3g/skin/ThreadPool.h>
 
 #include "Kernels.h"
@@ -268,6 +269,10 @@ void InfluencePartition::build(std::span<const std::int32_t> boneIndices, std::s
         runOffsets_[c + 1] = runs_.size();
     }
     buildCompact(boneIndices, boneWeights, weights, runBlock);
+}
+
+void InfluencePartition::buildForKernels(const InfluenceTable& table, std::size_t vertexCount, Isa isa) {
+    build(table.bones(), table.weights(), table.maxInfluences(), vertexCount, kNoInPlaceRuns, runBlock(isa));
 }
 
 std::size_t InfluencePartition::runBlock(Isa isa) noexcept {

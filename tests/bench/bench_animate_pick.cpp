@@ -136,9 +136,7 @@ bool loadSkinned(benchmark::State& state, const SkinnedFile& file, SkinnedScene&
             f.vertices += s->getVertexBuffer()->getVertexCount();
             const skin::InfluenceTable& table = s->influenceTable();
             skin::InfluencePartition p;
-            p.build(table.bones(), table.weights(), table.maxInfluences(),
-                    static_cast<std::size_t>(s->getVertexBuffer()->getVertexCount()),
-                    skin::InfluencePartition::kNoInPlaceRuns, skin::InfluencePartition::runBlock(skin::Isa::Auto));
+            p.buildForKernels(table, static_cast<std::size_t>(s->getVertexBuffer()->getVertexCount()));
             for (int c = 1; c <= p.maxInfluences(); ++c) {
                 for (const auto& run : p.compactRuns(c)) compactRunVertices += run.vertexCount;
                 for (const auto& run : p.compactBoneRuns(c)) boneRunVertices += run.vertexCount;

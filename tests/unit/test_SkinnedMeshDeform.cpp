@@ -399,8 +399,7 @@ void checkRandomRig(std::uint32_t seed, bool rigid) {
     // Vertices sharing their bones with their own weights (bone runs), the
     // kernels normalsFromPositions changes.
     skin::InfluencePartition part;
-    part.build(mesh->influenceTable().bones(), mesh->influenceTable().weights(), mesh->influenceTable().maxInfluences(),
-               static_cast<std::size_t>(n), skin::InfluencePartition::kNoInPlaceRuns);
+    part.buildForKernels(mesh->influenceTable(), static_cast<std::size_t>(n));
     std::size_t boneRunVertices = 0;
     for (int c = 1; c <= part.maxInfluences(); ++c)
         for (const auto& run : part.compactBoneRuns(c)) boneRunVertices += run.vertexCount;

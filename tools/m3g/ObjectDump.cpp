@@ -317,9 +317,7 @@ struct Dumper {
         const auto vertices = static_cast<std::size_t>(vb ? vb->getVertexCount() : 0);
         skin::InfluencePartition meshOrder, partition;
         meshOrder.build(table.bones(), table.weights(), table.maxInfluences(), vertices);
-        partition.build(table.bones(), table.weights(), table.maxInfluences(), vertices,
-                        skin::InfluencePartition::kNoInPlaceRuns,
-                        skin::InfluencePartition::runBlock(skin::Isa::Auto));  // as MeshDeformer, on this CPU
+        partition.buildForKernels(table, vertices);  // as MeshDeformer, on this CPU
         std::vector<int> byCount;
         int runs = 0, runVertices = 0, loose = 0, longest = 0;
         int compactRuns = 0, compactRunVertices = 0, compactLoose = 0, boneRuns = 0, boneRunVertices = 0;

@@ -19,6 +19,7 @@
 
 namespace m3g::skin {
 
+class InfluenceTable;
 class ThreadPool;
 
 /// Consecutive vertices [firstVertex, firstVertex + vertexCount) that all have
@@ -178,6 +179,12 @@ public:
     /// lanes its own blocks leave over (test.m3g's two- and three-bone
     /// sets: runs of 4-7 vertices beside bone runs; docs/skinning.md).
     static std::size_t runBlock(Isa isa) noexcept;
+
+    /// The partition as MeshDeformer skins `table`'s first `vertexCount`
+    /// vertices on the kernels of `isa`: every vertex with influences in
+    /// the compact space (kNoInPlaceRuns), short runs placed by
+    /// runBlock(isa). What `m3g info` and the benchmarks report too.
+    void buildForKernels(const InfluenceTable& table, std::size_t vertexCount, Isa isa = Isa::Auto);
 
     /// Largest group index (= stride after build()).
     int maxInfluences() const noexcept { return static_cast<int>(offsets_.size()) - 2; }
