@@ -33,4 +33,9 @@ private:
 /// `count` RGBA (or BGRA) texels to opaque 0xAARRGGBB words.
 void texelsToArgb(const std::uint8_t* src, std::uint32_t* out, std::size_t count, bool bgra) noexcept;
 
+/// texelsToArgb, spread over the shared thread pool (skin::ThreadPool) in
+/// fixed chunks when `count` is large (a 1280x960 frame), on the calling
+/// thread otherwise; the same words either way.
+void texelsToArgbParallel(const std::uint8_t* src, std::uint32_t* out, std::size_t count, bool bgra) noexcept;
+
 }  // namespace m3g::detail
