@@ -147,7 +147,8 @@ public:
     std::mutex& poolMutex() noexcept { return poolMutex_; }
 
     std::atomic<std::uint64_t> pipelinesCreated{0}, pipelinesEvicted{0}, draws{0}, bufferUploads{0},
-        textureUploads{0}, frames{0}, computeDispatches{0}, pipelineCacheBytesLoaded{0}, pipelineCacheSaves{0};
+        textureUploads{0}, frames{0}, computeDispatches{0}, pipelineCacheBytesLoaded{0}, pipelineCacheSaves{0},
+        frameWaitNanos{0}, readBackNanos{0};
     std::atomic<std::int64_t> liveBuffers{0}, liveTextures{0}, livePipelines{0}, memoryBytes{0};
 
     ~Context();

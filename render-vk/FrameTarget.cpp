@@ -282,15 +282,17 @@ void FrameTarget::submit(std::span<const VkCommandBuffer> cmds, VkFence fence, c
     }
 }
 
-void FrameTarget::writeBack(const frame::Target& t, const Ending& e) {
+bool FrameTarget::writeBack(const frame::Target& t, const Ending& e) {
     endFrame();
     // A window screenshot that could not be taken stays not ready.
-    if (!e.readback || (e.overlayWanted && !e.bgra)) return;
+    if (!e.readback || (e.overlayWanted && !e.bgra)) return false;
     if (window_) window_->markReadback();
     // Texels are RGBA, except a swapchain image's (the window with its overlay).
     const bool bgra = e.bgra && window_->swapchain().format() == VK_FORMAT_B8G8R8A8_UNORM;
     const auto* src = static_cast<const std::uint8_t*>(e.inPlace ? color_.mapped : transfer_.mapped);
-    if (t.pixels) t.pixels->write(src, bgra);
+    if (!t.pixels) return false;
+    t.pixels->write(src, bgra);
+    return true;
 }
 
 void FrameTarget::copyToHost(VkCommandBuffer cmd, VkImage image) {

@@ -64,8 +64,10 @@ public:
     Ending finish(VkCommandBuffer cmd);
     /// Submits `cmds` with `fence` (and the window's semaphores, then presents).
     void submit(std::span<const VkCommandBuffer> cmds, VkFence fence, const Ending& ending);
-    /// Once the fence is signalled: the pixels into the bound target.
-    void writeBack(const frame::Target& target, const Ending& ending);
+    /// Once the fence is signalled: the pixels into the bound target. True
+    /// when pixels were copied into the target's memory (a Graphics surface
+    /// or Image2D; a window's screenshot).
+    bool writeBack(const frame::Target& target, const Ending& ending);
 
     FrameTarget(const FrameTarget&) = delete;
     FrameTarget& operator=(const FrameTarget&) = delete;

@@ -1,5 +1,6 @@
 #include "Renderer.h"
 
+#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -286,14 +287,23 @@ void Renderer::release(const frame::Target& target, std::span<const std::uint64_
     if (VkCommandBuffer uploads = resources_->finishUploads()) cmds[n++] = uploads;
     if (VkCommandBuffer compute = resources_->finishCompute()) cmds[n++] = compute;
     cmds[n++] = cmd_;
+    // The frame's fixed cost, split for RenderStats (m3g bench render's
+    // columns): the submit and the wait for the device, then the read-back.
+    using Clock = std::chrono::steady_clock;
+    auto nanos = [](Clock::duration d) {
+        return static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::nanoseconds>(d).count());
+    };
+    const Clock::time_point submitted = Clock::now();
     target_.submit({cmds, n}, fence_, ending);
     check(vkWaitForFences(ctx_->device(), 1, &fence_, VK_TRUE, UINT64_MAX), "vkWaitForFences (frame)");
+    ctx_->frameWaitNanos += nanos(Clock::now() - submitted);
     ++ctx_->frames;
     resources_->release(released);
     resources_->endFrame();
     pipelines_->endFrame();
     streams_->endFrame();
-    target_.writeBack(target, ending);
+    const Clock::time_point finished = Clock::now();
+    if (target_.writeBack(target, ending)) ctx_->readBackNanos += nanos(Clock::now() - finished);
 }
 
 }  // namespace m3g::vk

@@ -89,6 +89,8 @@ RenderStats renderStats() {
     s.deviceMemoryBytes = static_cast<std::uint64_t>(std::max<std::int64_t>(0, c.memoryBytes));
     s.pipelineCacheBytesLoaded = c.pipelineCacheBytesLoaded;
     s.pipelineCacheSaves = c.pipelineCacheSaves;
+    s.frameWaitNanoseconds = c.frameWaitNanos;
+    s.readBackNanoseconds = c.readBackNanos;
     return s;
 }
 

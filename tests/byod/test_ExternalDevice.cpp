@@ -233,6 +233,34 @@ TEST(Byod, UndefinedContentsStartBlackAndFramesFollowEachOther) {
     gApp->destroy(color);
 }
 
+// RenderStats splits a frame's fixed cost (m3g bench render's last two
+// columns): every submitted frame adds its wait for the device; only a frame
+// copied into the application's memory (an Image2D here) adds read-back
+// time, a frame left in a Vulkan image adds none.
+TEST(Byod, FrameStatsCountTheWaitAndOnlyRealReadBacks) {
+    m3g::vk::useDevice(external());
+    m3g::Ref<m3g::World> world = scene(false);
+    const m3g::vk::RenderStats s0 = m3g::vk::renderStats();
+    const std::vector<std::uint8_t> pixels = reference(world.get());  // an Image2D target
+    ASSERT_FALSE(pixels.empty());
+    const m3g::vk::RenderStats s1 = m3g::vk::renderStats();
+    EXPECT_EQ(s1.frames - s0.frames, 1u);
+    EXPECT_GT(s1.frameWaitNanoseconds, s0.frameWaitNanoseconds);
+    EXPECT_GT(s1.readBackNanoseconds, s0.readBackNanoseconds);
+
+    byod::AppImage color = gApp->createImage(kW, kH, VK_FORMAT_R8G8B8A8_UNORM,
+                                             VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+    auto target = m3g::make<m3g::vk::ImageTarget>(
+        kW, kH, m3g::vk::ImageAttachment{color.image, color.format, VK_IMAGE_LAYOUT_UNDEFINED,
+                                         VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL});
+    render(target.get(), world.get());
+    const m3g::vk::RenderStats s2 = m3g::vk::renderStats();
+    EXPECT_EQ(s2.frames - s1.frames, 1u);
+    EXPECT_GT(s2.frameWaitNanoseconds, s1.frameWaitNanoseconds);
+    EXPECT_EQ(s2.readBackNanoseconds, s1.readBackNanoseconds) << "a frame left in the application's image was read back";
+    gApp->destroy(color);
+}
+
 TEST(Byod, MisuseIsRefusedWithClearErrors) {
     // A null handle: nothing is set up, so the real device can follow.
     m3g::vk::ExternalDevice missing = external();

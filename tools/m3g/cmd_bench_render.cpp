@@ -9,8 +9,11 @@
 // threads, lavapipe's rasterizer included) for bind, render(World) and
 // releaseTarget with read-back; the calling thread's CPU time in
 // render(World) per draw (collect, uploads if any, recording; the frame is
-// opened by a clear(null) before it); and pipelines created in steady state
-// (should be 0). M3G_VK_PREWARM=1/0 forces pipeline pre-warming on or off.
+// opened by a clear(null) before it); pipelines created in steady state
+// (should be 0); and where the frame's fixed cost goes, wall time per frame
+// (RenderStats): from the submit until the frame's fence signalled (the
+// device's work and the driver's round trip) and the read-back into the
+// Graphics surface. M3G_VK_PREWARM=1/0 forces pipeline pre-warming on or off.
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -60,7 +63,8 @@ int benchRender(const BenchRenderArgs& args) {
     int failed = 0;
     m3g::Graphics3D* g = m3g::Graphics3D::getInstance();
     std::printf("%dx%d, %d frames per file\n", width, height, frames);
-    std::printf("%-40s %7s %9s %9s %9s %8s %9s %6s\n", "file", "draws", "first ms", "ms/frame", "fps", "cpu ms", "us/draw", "pipes");
+    std::printf("%-40s %7s %9s %9s %9s %8s %9s %6s %8s %8s\n", "file", "draws", "first ms", "ms/frame", "fps", "cpu ms",
+                "us/draw", "pipes", "wait ms", "read ms");
     for (const std::string& file : files) {
         try {
             m3g::LoadResult loaded = loadInput(file, false);
@@ -87,9 +91,11 @@ int benchRender(const BenchRenderArgs& args) {
             const auto after = m3g::vk::renderStats();
             const double draws = static_cast<double>(after.draws - before.draws) / frames;
             std::string name = file.size() > 40 ? "..." + file.substr(file.size() - 37) : file;
-            std::printf("%-40s %7.0f %9.1f %9.2f %9.1f %8.2f %9.2f %6llu\n", name.c_str(), draws, first * 1e3, wall * 1e3,
-                        1.0 / wall, cpu * 1e3, draws > 0 ? renderCpu / frames / draws * 1e6 : 0.0,
-                        static_cast<unsigned long long>(after.pipelinesCreated - before.pipelinesCreated));
+            const double waitMs = static_cast<double>(after.frameWaitNanoseconds - before.frameWaitNanoseconds) / frames * 1e-6;
+            const double readMs = static_cast<double>(after.readBackNanoseconds - before.readBackNanoseconds) / frames * 1e-6;
+            std::printf("%-40s %7.0f %9.1f %9.2f %9.1f %8.2f %9.2f %6llu %8.3f %8.3f\n", name.c_str(), draws, first * 1e3,
+                        wall * 1e3, 1.0 / wall, cpu * 1e3, draws > 0 ? renderCpu / frames / draws * 1e6 : 0.0,
+                        static_cast<unsigned long long>(after.pipelinesCreated - before.pipelinesCreated), waitMs, readMs);
             std::fflush(stdout);  // a run stopped by a time limit keeps the files measured
         } catch (const m3g::vk::VulkanError&) {
             throw;  // no device: every file would fail the same way
@@ -111,7 +117,7 @@ int benchRender(const BenchRenderArgs& args) {
 
 void addBenchRenderCommand(CLI::App& bench, CommandTable& table) {
     CLI::App* app = addCommandApp(bench, "render",
-                                  "rendering speed per file: first frame, ms per frame, fps, CPU per draw");
+                                  "rendering speed per file: first frame, ms per frame, fps, CPU per draw, device wait and read-back per frame");
     auto args = std::make_shared<BenchRenderArgs>();
     app->add_option("files", args->files, "the .m3g files to measure")->type_name("FILE")->required();
     app->add_option("--size", args->size, "target size in pixels (default 320x240)")->type_name("WxH");

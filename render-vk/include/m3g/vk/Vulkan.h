@@ -105,6 +105,15 @@ struct RenderStats {
     /// of it renderers were seeded with, and how many times it was written.
     std::uint64_t pipelineCacheBytesLoaded = 0;
     std::uint64_t pipelineCacheSaves = 0;
+    /// Where a frame's fixed cost goes (docs/rendering.md "Measuring"): wall
+    /// time, summed over the frames counted in `frames`, from each frame's
+    /// submit until its fence signalled (the device's work and the driver's
+    /// round trip), and copying each finished frame into its target's memory
+    /// (a Graphics surface, an Image2D or a window's screenshot: the
+    /// read-back's conversion; frames that are not read back, as a window's
+    /// or a Vulkan image target's, add nothing to it).
+    std::uint64_t frameWaitNanoseconds = 0;
+    std::uint64_t readBackNanoseconds = 0;
 };
 M3G_API RenderStats renderStats();
 
