@@ -87,6 +87,7 @@ inline Bytes writeJpeg(const JpegSpec& s) {
     if (jpegWriteImpl(&s, &c, &err, &buf, &size)) out.assign(buf, buf + size);
     jpeg_destroy_compress(&c);
     std::free(buf);  // jpeg_mem_dest's buffer, malloc'd by libjpeg (also after a failure)
+    dumpFuzzSeed(out, ".jpg");  // seeds of the jpeg fuzz target (scripts/fuzz)
     return out;
 }
 

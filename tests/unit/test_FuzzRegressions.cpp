@@ -38,6 +38,8 @@ TEST(FuzzRegressions, LoaderInputsLoadOrFailWithIOException) { replay("loader", 
 
 TEST(FuzzRegressions, PngInputsLoadOrFailWithIOException) { replay("png", m3gfuzz::checkPng); }
 
+TEST(FuzzRegressions, JpegInputsLoadOrFailWithIOException) { replay("jpeg", m3gfuzz::checkJpeg); }
+
 TEST(FuzzRegressions, RoundTripInputsSaveAndLoadAgain) {
     replay("roundtrip", m3gfuzz::checkRoundTrip);
     // A reproducer of one target is a hostile input for the others too.

@@ -41,7 +41,7 @@ using m3gtest::VkTest;
 
 TEST_F(VkTest, FuzzReproducersRenderWithinTheRenderFuzzRules) {
     std::size_t total = 0;
-    for (const char* target : {"render", "loader", "roundtrip", "png"}) {
+    for (const char* target : {"render", "loader", "roundtrip", "png", "jpeg"}) {
         const std::size_t n = replay(m3gtest::regressionFiles(target));
         std::printf("[ replayed ] %zu %s reproducer(s)\n", n, target);
         total += n;
