@@ -104,6 +104,19 @@ void render(m3g::vk::ImageTarget* target, m3g::World* world) {
     g3d->releaseTarget();
 }
 
+// An RGBA image of the application's that m3g-vk draws into and the test
+// reads back (no colour-attachment use of the application's own).
+byod::AppImage readableImage() {
+    return gApp->createImage(kW, kH, VK_FORMAT_R8G8B8A8_UNORM,
+                             VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+}
+
+// `image` as a colour attachment whose prior contents are discarded and
+// which is left ready to be read back.
+m3g::vk::ImageAttachment freshAttachment(const byod::AppImage& image) {
+    return {image.image, image.format, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+}
+
 // The pixel at (x, y) of an image read from the application as RGBA.
 const std::uint8_t* at(const std::vector<std::uint8_t>& rgba, std::uint32_t x, std::uint32_t y) {
     return &rgba[(static_cast<std::size_t>(y) * kW + x) * 4];
@@ -212,11 +225,8 @@ TEST(Byod, UndefinedContentsStartBlackAndFramesFollowEachOther) {
     const std::uint8_t black[4] = {0, 0, 0, 0xFF};
     m3g::Ref<m3g::World> keep = scene(true), cleared = scene(false, black);
     const std::vector<std::uint8_t> expected = reference(cleared.get());
-    byod::AppImage color = gApp->createImage(kW, kH, VK_FORMAT_R8G8B8A8_UNORM,
-                                             VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
-    auto target = m3g::make<m3g::vk::ImageTarget>(
-        kW, kH, m3g::vk::ImageAttachment{color.image, color.format, VK_IMAGE_LAYOUT_UNDEFINED,
-                                         VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL});
+    byod::AppImage color = readableImage();
+    auto target = m3g::make<m3g::vk::ImageTarget>(kW, kH, freshAttachment(color));
     render(target.get(), keep.get());
     const std::vector<std::uint8_t> first = gApp->read(color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
     EXPECT_EQ(first, expected);
@@ -248,11 +258,8 @@ TEST(Byod, FrameStatsCountTheWaitAndOnlyRealReadBacks) {
     EXPECT_GT(s1.frameWaitNanoseconds, s0.frameWaitNanoseconds);
     EXPECT_GT(s1.readBackNanoseconds, s0.readBackNanoseconds);
 
-    byod::AppImage color = gApp->createImage(kW, kH, VK_FORMAT_R8G8B8A8_UNORM,
-                                             VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
-    auto target = m3g::make<m3g::vk::ImageTarget>(
-        kW, kH, m3g::vk::ImageAttachment{color.image, color.format, VK_IMAGE_LAYOUT_UNDEFINED,
-                                         VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL});
+    byod::AppImage color = readableImage();
+    auto target = m3g::make<m3g::vk::ImageTarget>(kW, kH, freshAttachment(color));
     render(target.get(), world.get());
     const m3g::vk::RenderStats s2 = m3g::vk::renderStats();
     EXPECT_EQ(s2.frames - s1.frames, 1u);
@@ -277,10 +284,8 @@ TEST(Byod, MisuseIsRefusedWithClearErrors) {
     m3g::vk::useDevice(external());
     EXPECT_THROW(m3g::vk::useDevice(external()), m3g::IllegalStateException);
 
-    byod::AppImage color = gApp->createImage(kW, kH, VK_FORMAT_R8G8B8A8_UNORM,
-                                             VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
-    const m3g::vk::ImageAttachment good{color.image, color.format, VK_IMAGE_LAYOUT_UNDEFINED,
-                                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+    byod::AppImage color = readableImage();
+    const m3g::vk::ImageAttachment good = freshAttachment(color);
     EXPECT_THROW(m3g::vk::ImageTarget(kW, kH, m3g::vk::ImageAttachment{}), m3g::NullPointerException);
     EXPECT_THROW(m3g::vk::ImageTarget(kW, kH, {color.image, color.format, VK_IMAGE_LAYOUT_UNDEFINED,
                                                VK_IMAGE_LAYOUT_UNDEFINED}),

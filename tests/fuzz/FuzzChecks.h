@@ -75,61 +75,47 @@ inline void checkLoaderOnce(std::span<const std::uint8_t> bytes) {
     M3G_FUZZ_OTHER_EXCEPTIONS_FAIL("lenient load")
 }
 
-/// PNG target, one form of the input: a load through the Loader gives an
-/// IOException or one immutable Image2D within the decoder's limits whose
-/// pixel store matches its size and format (JSR-184 1.1, Loader).
-inline void checkPngOnce(std::span<const std::uint8_t> bytes) {
+/// An image file's rules (the png and jpeg targets): a load through the
+/// Loader gives an IOException or one immutable Image2D within the decoders'
+/// limits (1..16384 a side), of a format `allowed` accepts, whose pixel store
+/// matches its size and format (JSR-184 1.1, Loader). `kind` names the file
+/// kind in the messages.
+template <class Allowed>
+void checkImageLoad(std::span<const std::uint8_t> bytes, const std::string& kind, Allowed allowed) {
     if (bytes.empty()) return;
     try {
         const m3g::LoadResult r = m3g::Loader::loadDetailed(bytes, 0);
         if (r.versionMajor != 0) return;  // bytes that sniff as .m3g: the loader target's business
-        expect(r.objects.size() == 1 && r.roots.size() == 1, "a PNG must give exactly one object");
+        expect(r.objects.size() == 1 && r.roots.size() == 1, "a " + kind + " must give exactly one object");
         const auto* image = dynamic_cast<const m3g::Image2D*>(r.objects[0].get());
-        expect(image != nullptr, "a PNG must give an Image2D");
-        expect(!image->isMutable(), "a PNG Image2D must be immutable");
-        const int f = image->getFormat();
-        expect(f == m3g::Image2D::LUMINANCE || f == m3g::Image2D::LUMINANCE_ALPHA || f == m3g::Image2D::RGB ||
-                   f == m3g::Image2D::RGBA,
-               "PNG Image2D format out of range");
+        expect(image != nullptr, "a " + kind + " must give an Image2D");
+        expect(!image->isMutable(), "a " + kind + " Image2D must be immutable");
+        expect(allowed(image->getFormat()), kind + " Image2D format out of range");
         const int w = image->getWidth(), h = image->getHeight();
-        expect(w >= 1 && h >= 1 && w <= 16384 && h <= 16384, "PNG Image2D size out of range");
+        expect(w >= 1 && h >= 1 && w <= 16384 && h <= 16384, kind + " Image2D size out of range");
         const std::size_t pixels = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
         expect(image->pixels().size() == pixels * static_cast<std::size_t>(image->bytesPerPixel()),
-               "PNG Image2D pixel store does not match width * height * bpp");
+               kind + " Image2D pixel store does not match width * height * bpp");
         std::vector<std::uint8_t> rgba;
         image->getPixelsRGBA8(rgba);
         expect(rgba.size() == pixels * 4, "getPixelsRGBA8 size");
     } catch (const m3g::IOException&) {
     }
-    M3G_FUZZ_OTHER_EXCEPTIONS_FAIL("PNG load")
+    M3G_FUZZ_OTHER_EXCEPTIONS_FAIL(kind + " load")
 }
 
-/// JPEG target: a load through the Loader gives an IOException or one
-/// immutable Image2D, greyscale (LUMINANCE) or colour (RGB), within the
-/// decoder's limits, whose pixel store matches its size and format. JPEG
-/// has no checksums to repair: the input is checked as given.
+/// PNG target, one form of the input: any of the four formats a PNG decodes to.
+inline void checkPngOnce(std::span<const std::uint8_t> bytes) {
+    checkImageLoad(bytes, "PNG", [](int f) {
+        return f == m3g::Image2D::LUMINANCE || f == m3g::Image2D::LUMINANCE_ALPHA || f == m3g::Image2D::RGB ||
+               f == m3g::Image2D::RGBA;
+    });
+}
+
+/// JPEG target: greyscale (LUMINANCE) or colour (RGB). JPEG has no
+/// checksums to repair: the input is checked as given.
 inline void checkJpeg(std::span<const std::uint8_t> bytes) {
-    if (bytes.empty()) return;
-    try {
-        const m3g::LoadResult r = m3g::Loader::loadDetailed(bytes, 0);
-        if (r.versionMajor != 0) return;  // bytes that sniff as .m3g: the loader target's business
-        expect(r.objects.size() == 1 && r.roots.size() == 1, "a JPEG must give exactly one object");
-        const auto* image = dynamic_cast<const m3g::Image2D*>(r.objects[0].get());
-        expect(image != nullptr, "a JPEG must give an Image2D");
-        expect(!image->isMutable(), "a JPEG Image2D must be immutable");
-        const int f = image->getFormat();
-        expect(f == m3g::Image2D::LUMINANCE || f == m3g::Image2D::RGB, "JPEG Image2D format not LUMINANCE or RGB");
-        const int w = image->getWidth(), h = image->getHeight();
-        expect(w >= 1 && h >= 1 && w <= 16384 && h <= 16384, "JPEG Image2D size out of range");
-        const std::size_t pixels = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
-        expect(image->pixels().size() == pixels * static_cast<std::size_t>(image->bytesPerPixel()),
-               "JPEG Image2D pixel store does not match width * height * bpp");
-        std::vector<std::uint8_t> rgba;
-        image->getPixelsRGBA8(rgba);
-        expect(rgba.size() == pixels * 4, "getPixelsRGBA8 size");
-    } catch (const m3g::IOException&) {
-    }
-    M3G_FUZZ_OTHER_EXCEPTIONS_FAIL("JPEG load")
+    checkImageLoad(bytes, "JPEG", [](int f) { return f == m3g::Image2D::LUMINANCE || f == m3g::Image2D::RGB; });
 }
 
 /// Round-trip target, one form of the input: whatever loads (leniently, the
