@@ -366,7 +366,7 @@ void InfluencePartition::buildCompact(std::span<const std::int32_t> boneIndices,
                 const std::size_t length = e - q;
                 if (length >= kMinRun && (length >= runBlock || length == setEnd - i)) {
                     runVertices.insert(runVertices.end(), from, to);
-                    runLengths.push_back(static_cast<std::uint32_t>(e - q));
+                    runLengths.push_back(static_cast<std::uint32_t>(length));
                 } else {
                     looseVertices.insert(looseVertices.end(), from, to);
                 }
