@@ -132,6 +132,10 @@ void Context::createDevice(const std::vector<VkPhysicalDevice>& devices) {
     // Wireframe debug view only (DebugView::wireframe).
     enable.features.fillModeNonSolid = f2.features.fillModeNonSolid;
     wireframe_ = f2.features.fillModeNonSolid == VK_TRUE;
+    // Shader invocation counting (setShaderInvocationCounting): a query
+    // only while it is on, so enabling the feature costs nothing otherwise.
+    enable.features.pipelineStatisticsQuery = f2.features.pipelineStatisticsQuery;
+    pipelineStatistics_ = f2.features.pipelineStatisticsQuery == VK_TRUE;
 
     std::vector<const char*> extensions;
     std::uint32_t ne = 0;

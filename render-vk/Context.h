@@ -130,6 +130,9 @@ public:
     bool swapchainEnabled() const noexcept { return swapchain_; }
     /// Whether polygon mode LINE can be used (the wireframe debug view).
     bool wireframeSupported() const noexcept { return wireframe_; }
+    /// Whether pipeline-statistics queries can be used (shader invocation
+    /// counting, setShaderInvocationCounting).
+    bool pipelineStatisticsSupported() const noexcept { return pipelineStatistics_; }
     /// vkDeviceWaitIdle with the queue locked (Vulkan requires external
     /// synchronisation of every queue of the device for it).
     void waitIdle();
@@ -148,7 +151,7 @@ public:
 
     std::atomic<std::uint64_t> pipelinesCreated{0}, pipelinesEvicted{0}, draws{0}, bufferUploads{0},
         textureUploads{0}, frames{0}, computeDispatches{0}, pipelineCacheBytesLoaded{0}, pipelineCacheSaves{0},
-        frameWaitNanos{0}, readBackNanos{0};
+        frameWaitNanos{0}, readBackNanos{0}, countedFrames{0}, vertexInvocations{0}, fragmentInvocations{0};
     std::atomic<std::int64_t> liveBuffers{0}, liveTextures{0}, livePipelines{0}, memoryBytes{0};
 
     ~Context();
@@ -180,6 +183,7 @@ private:
     bool validation_ = false;
     bool swapchain_ = false;
     bool wireframe_ = false;
+    bool pipelineStatistics_ = false;
     bool external_ = false;
     std::mutex queueMutex_, poolMutex_;
     std::mutex* queueLock_ = &queueMutex_;  // queueMutex_ or the application's (ExternalDevice::queueMutex)

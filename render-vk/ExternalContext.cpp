@@ -67,6 +67,7 @@ Context::Context(const ExternalDevice& d) {
     depthFormat_ = chooseDepthFormat(physical_);
     maxSamples_ = antialiasSamples(properties_);
     wireframe_ = d.fillModeNonSolid;
+    pipelineStatistics_ = d.pipelineStatisticsQuery && f2.features.pipelineStatisticsQuery == VK_TRUE;
     swapchain_ = d.swapchain;
     pool_ = createCommandPool();
 }

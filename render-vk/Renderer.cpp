@@ -17,7 +17,7 @@ constexpr VkDeviceSize kStreamStrides[frame::STREAM_COUNT] = {12, 12, 16, 12, 12
 
 }  // namespace
 
-Renderer::Renderer() : ctx_(Context::shared()), target_(*ctx_) {
+Renderer::Renderer() : ctx_(Context::shared()), target_(*ctx_), counter_(*ctx_) {
     pipelines_ = std::make_unique<Pipelines>(*ctx_);
     resources_ = std::make_unique<ResourceCache>(*ctx_, pipelines_->textureSetLayout());
     streams_ = std::make_unique<StreamBuffers>(*ctx_, pipelines_->uniformSetLayout());
@@ -72,6 +72,7 @@ void Renderer::startFrame(const frame::Target& target) {
     streams_->beginFrame();
     lastKey_ = ~0ull;  // pipelines may have been evicted at the last frame's end
     if (target_.samples() != VK_SAMPLE_COUNT_1_BIT) preparePrior();
+    counter_.prepare();
     started_ = true;
 }
 
@@ -148,6 +149,7 @@ void Renderer::openFrame(const frame::Target& target, const float* clearColor, b
     bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     check(vkBeginCommandBuffer(cmd_, &bi), "vkBeginCommandBuffer");
     target_.begin(cmd_, target, clearColor, covered);
+    counter_.begin(cmd_);
     recorder_.reset(cmd_, pipelines_->layout(), target_.hasDepth());
     recording_ = true;
     renderingOpen_ = false;
@@ -277,6 +279,7 @@ void Renderer::release(const frame::Target& target, std::span<const std::uint64_
     started_ = false;
     openRendering();  // a frame of clears only: their load operation
     vkCmdEndRendering(cmd_);
+    counter_.end(cmd_);
     const FrameTarget::Ending ending = target_.finish(cmd_);
     check(vkEndCommandBuffer(cmd_), "vkEndCommandBuffer");
     vkResetFences(ctx_->device(), 1, &fence_);
@@ -298,6 +301,7 @@ void Renderer::release(const frame::Target& target, std::span<const std::uint64_
     check(vkWaitForFences(ctx_->device(), 1, &fence_, VK_TRUE, UINT64_MAX), "vkWaitForFences (frame)");
     ctx_->frameWaitNanos += nanos(Clock::now() - submitted);
     ++ctx_->frames;
+    counter_.collect();
     resources_->release(released);
     resources_->endFrame();
     pipelines_->endFrame();

@@ -19,6 +19,7 @@
 #include "PreparedDraw.h"
 #include "Recorder.h"
 #include "ResourceCache.h"
+#include "ShaderCounter.h"
 #include "StreamBuffers.h"
 
 namespace m3g::vk {
@@ -64,6 +65,7 @@ private:
     std::unique_ptr<StreamBuffers> streams_;
     FrameTarget target_;
     Recorder recorder_;
+    ShaderCounter counter_;  // shader invocation counting, when on
     VkCommandPool commandPool_ = VK_NULL_HANDLE;  // this renderer's own (threading.md)
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;

@@ -67,6 +67,16 @@ std::atomic<bool>& clampLitFlag() noexcept {
 
 void setLitColorClamping(bool clamp) noexcept { clampLitFlag() = clamp; }
 bool litColorClamping() noexcept { return clampLitFlag().load(); }
+
+namespace {
+std::atomic<bool> gCountShaders{false};
+}
+
+void setShaderInvocationCounting(bool on) noexcept { gCountShaders = on; }
+bool shaderInvocationCounting() noexcept { return gCountShaders.load(); }
+bool shaderInvocationCountingSupported() noexcept {
+    return Context::exists() && Context::get().pipelineStatisticsSupported();
+}
 std::string lastValidationMessage() {
     std::lock_guard lock(gMessageMutex);
     return gLastMessage;
@@ -91,6 +101,9 @@ RenderStats renderStats() {
     s.pipelineCacheSaves = c.pipelineCacheSaves;
     s.frameWaitNanoseconds = c.frameWaitNanos;
     s.readBackNanoseconds = c.readBackNanos;
+    s.countedFrames = c.countedFrames;
+    s.vertexShaderInvocations = c.vertexInvocations;
+    s.fragmentShaderInvocations = c.fragmentInvocations;
     return s;
 }
 

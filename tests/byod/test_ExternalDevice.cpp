@@ -268,6 +268,26 @@ TEST(Byod, FrameStatsCountTheWaitAndOnlyRealReadBacks) {
     gApp->destroy(color);
 }
 
+// Shader invocation counting needs the pipelineStatisticsQuery feature,
+// which only the application can enable on its device: the application's
+// device here was made without it and ExternalDevice says so (its default),
+// so nothing is counted and no query is made (the validation layer would
+// report a statistics query on a device without the feature).
+TEST(Byod, ShaderCountingNeedsTheApplicationsFeature) {
+    m3g::vk::useDevice(external());
+    EXPECT_FALSE(m3g::vk::shaderInvocationCountingSupported());
+    m3g::vk::setShaderInvocationCounting(true);
+    m3g::Ref<m3g::World> world = scene(false);
+    const m3g::vk::RenderStats s0 = m3g::vk::renderStats();
+    const std::vector<std::uint8_t> pixels = reference(world.get());
+    m3g::vk::setShaderInvocationCounting(false);
+    ASSERT_FALSE(pixels.empty());
+    const m3g::vk::RenderStats s1 = m3g::vk::renderStats();
+    EXPECT_EQ(s1.frames - s0.frames, 1u);
+    EXPECT_EQ(s1.countedFrames, s0.countedFrames);
+    EXPECT_EQ(s1.vertexShaderInvocations, s0.vertexShaderInvocations);
+}
+
 TEST(Byod, MisuseIsRefusedWithClearErrors) {
     // A null handle: nothing is set up, so the real device can follow.
     m3g::vk::ExternalDevice missing = external();

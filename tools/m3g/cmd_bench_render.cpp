@@ -2,7 +2,7 @@
 // headless (the figures in docs/rendering.md, "Measuring"). Not a test: it
 // prints.
 //
-//   m3g bench render FILE... [--size WxH] [--frames N]
+//   m3g bench render FILE... [--size WxH] [--frames N] [--invocations]
 //
 // Per file: first-frame latency (a fresh renderer: pipeline and upload
 // work included); steady-state wall time and process CPU time per frame (all
@@ -13,7 +13,10 @@
 // (should be 0); and where the frame's fixed cost goes, wall time per frame
 // (RenderStats): from the submit until the frame's fence signalled (the
 // device's work and the driver's round trip) and the read-back into the
-// Graphics surface. M3G_VK_PREWARM=1/0 forces pipeline pre-warming on or off.
+// Graphics surface. With --invocations, also the vertex and fragment shader
+// invocations per frame the device counted (a pipeline-statistics query around
+// each frame; `-` where the device cannot count them). M3G_VK_PREWARM=1/0
+// forces pipeline pre-warming on or off.
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -50,6 +53,7 @@ double wallSeconds() {
 struct BenchRenderArgs {
     std::vector<std::string> files;
     std::string size, frames;
+    bool invocations = false;
 };
 
 int benchRender(const BenchRenderArgs& args) {
@@ -63,8 +67,11 @@ int benchRender(const BenchRenderArgs& args) {
     int failed = 0;
     m3g::Graphics3D* g = m3g::Graphics3D::getInstance();
     std::printf("%dx%d, %d frames per file\n", width, height, frames);
-    std::printf("%-40s %7s %9s %9s %9s %8s %9s %6s %8s %8s\n", "file", "draws", "first ms", "ms/frame", "fps", "cpu ms",
+    std::printf("%-40s %7s %9s %9s %9s %8s %9s %6s %8s %8s", "file", "draws", "first ms", "ms/frame", "fps", "cpu ms",
                 "us/draw", "pipes", "wait ms", "read ms");
+    if (args.invocations) std::printf(" %10s %10s", "vs/frame", "fs/frame");
+    std::printf("\n");
+    m3g::vk::setShaderInvocationCounting(args.invocations);
     for (const std::string& file : files) {
         try {
             m3g::LoadResult loaded = loadInput(file, false);
@@ -93,9 +100,21 @@ int benchRender(const BenchRenderArgs& args) {
             std::string name = file.size() > 40 ? "..." + file.substr(file.size() - 37) : file;
             const double waitMs = static_cast<double>(after.frameWaitNanoseconds - before.frameWaitNanoseconds) / frames * 1e-6;
             const double readMs = static_cast<double>(after.readBackNanoseconds - before.readBackNanoseconds) / frames * 1e-6;
-            std::printf("%-40s %7.0f %9.1f %9.2f %9.1f %8.2f %9.2f %6llu %8.3f %8.3f\n", name.c_str(), draws, first * 1e3,
+            std::printf("%-40s %7.0f %9.1f %9.2f %9.1f %8.2f %9.2f %6llu %8.3f %8.3f", name.c_str(), draws, first * 1e3,
                         wall * 1e3, 1.0 / wall, cpu * 1e3, draws > 0 ? renderCpu / frames / draws * 1e6 : 0.0,
                         static_cast<unsigned long long>(after.pipelinesCreated - before.pipelinesCreated), waitMs, readMs);
+            if (args.invocations) {
+                const std::uint64_t counted = after.countedFrames - before.countedFrames;
+                if (counted == 0) {
+                    std::printf(" %10s %10s", "-", "-");  // the device cannot count them
+                } else {
+                    const double n = static_cast<double>(counted);
+                    std::printf(" %10.0f %10.0f",
+                                static_cast<double>(after.vertexShaderInvocations - before.vertexShaderInvocations) / n,
+                                static_cast<double>(after.fragmentShaderInvocations - before.fragmentShaderInvocations) / n);
+                }
+            }
+            std::printf("\n");
             std::fflush(stdout);  // a run stopped by a time limit keeps the files measured
         } catch (const m3g::vk::VulkanError&) {
             throw;  // no device: every file would fail the same way
@@ -108,8 +127,11 @@ int benchRender(const BenchRenderArgs& args) {
             failed = failed ? failed : int(kExitRender);
         }
     }
+    m3g::vk::setShaderInvocationCounting(false);
     const auto info = m3g::vk::currentDevice();
     std::printf("device: %s (%s)\n", info.name.c_str(), info.type.c_str());
+    if (args.invocations && !m3g::vk::shaderInvocationCountingSupported())
+        std::printf("shader invocations: not counted (the device lacks pipelineStatisticsQuery)\n");
     return failed;  // 0, or the first failure's code (3 load, 5 render)
 }
 
@@ -122,6 +144,9 @@ void addBenchRenderCommand(CLI::App& bench, CommandTable& table) {
     app->add_option("files", args->files, "the .m3g files to measure")->type_name("FILE")->required();
     app->add_option("--size", args->size, "target size in pixels (default 320x240)")->type_name("WxH");
     app->add_option("--frames", args->frames, "frames measured per file (default 100)")->type_name("N");
+    app->add_flag("--invocations", args->invocations,
+                  "also count the vertex and fragment shader invocations per frame (a Vulkan pipeline-statistics "
+                  "query; lavapipe counts fragments in whole 4x4 blocks)");
     table[app] = [args] { return benchRender(*args); };
 }
 

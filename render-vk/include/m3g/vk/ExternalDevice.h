@@ -45,6 +45,10 @@ struct ExternalDevice {
     bool fillModeNonSolid = false;
     /// The device was created with VK_KHR_swapchain (for WindowTarget).
     bool swapchain = false;
+    /// The device was created with the `pipelineStatisticsQuery` feature
+    /// (for shader invocation counting, setShaderInvocationCounting;
+    /// otherwise nothing is counted).
+    bool pipelineStatisticsQuery = false;
 };
 
 /// Makes every Graphics3D render with `device` from the next clear or render

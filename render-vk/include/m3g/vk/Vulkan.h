@@ -83,6 +83,25 @@ M3G_API DebugView debugView() noexcept;
 M3G_API void setLitColorClamping(bool clamp) noexcept;
 M3G_API bool litColorClamping() noexcept;
 
+/// Shader invocation counting, an m3g-vk extension for profiling content
+/// (JSR-184 has no such query), off by default: while on, each frame that
+/// reaches the device is measured with a Vulkan pipeline-statistics query,
+/// and RenderStats::countedFrames, vertexShaderInvocations and
+/// fragmentShaderInvocations grow (`m3g bench render --invocations`). It
+/// applies to every Graphics3D from its next frame on, and only where
+/// shaderInvocationCountingSupported() is true; elsewhere it counts nothing.
+/// What a device counts is its own (docs/rendering.md, "Measuring"): a
+/// vertex shared by triangles may be shaded more than once, and lavapipe
+/// counts fragments in whole 4x4 blocks.
+M3G_API void setShaderInvocationCounting(bool on) noexcept;
+M3G_API bool shaderInvocationCounting() noexcept;
+/// Whether the device Graphics3D renders with can count shader invocations:
+/// it has the pipelineStatisticsQuery feature, which m3g-vk enables on the
+/// devices it creates (on an application's device,
+/// ExternalDevice::pipelineStatisticsQuery says whether it was enabled).
+/// False while no device exists; never creates one.
+M3G_API bool shaderInvocationCountingSupported() noexcept;
+
 /// Counters since the device was created.
 struct RenderStats {
     std::uint64_t pipelinesCreated = 0;
@@ -114,6 +133,13 @@ struct RenderStats {
     /// or a Vulkan image target's, add nothing to it).
     std::uint64_t frameWaitNanoseconds = 0;
     std::uint64_t readBackNanoseconds = 0;
+    /// Shader invocation counting (setShaderInvocationCounting): frames
+    /// counted, and the vertex and fragment shader invocations the device
+    /// reported for them (the frame's draws, Background images and sprites;
+    /// clears and skinning or morphing on the device are not shading).
+    std::uint64_t countedFrames = 0;
+    std::uint64_t vertexShaderInvocations = 0;
+    std::uint64_t fragmentShaderInvocations = 0;
 };
 M3G_API RenderStats renderStats();
 
