@@ -67,9 +67,12 @@ struct ViewerState {
     m3g::Object3D* selected = nullptr;
     std::optional<PickResult> pick;
 
-    // Statistics of the last frame.
+    // Statistics of the last frame; the shader invocations only while
+    // countShaders is on (m3g::vk::setShaderInvocationCounting).
     double frameMs = 0.0, renderMs = 0.0;
     std::uint64_t drawsPerFrame = 0;
+    bool countShaders = false;
+    std::uint64_t vertexInvocations = 0, fragmentInvocations = 0;
 
     // A JAR whose .m3g entries are listed for choosing.
     std::string jarPath;

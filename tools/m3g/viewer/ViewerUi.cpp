@@ -383,6 +383,16 @@ void statsAndDebug(ViewerState& state) {
     ImGui::Text("submeshes %d, triangles %d, vertices %d", s.submeshes, s.triangles, s.vertices);
     ImGui::Text("draws %llu, frame %.2f ms (render %.2f ms)", static_cast<unsigned long long>(state.drawsPerFrame),
                 state.frameMs, state.renderMs);
+    // What the device shaded in the last frame (overdraw, vertex reuse): a
+    // pipeline-statistics query per frame while ticked.
+    ImGui::Checkbox("count shader invocations", &state.countShaders);
+    if (state.countShaders) {
+        if (vk::shaderInvocationCountingSupported())
+            ImGui::Text("shaded: %llu vertices, %llu fragments", static_cast<unsigned long long>(state.vertexInvocations),
+                        static_cast<unsigned long long>(state.fragmentInvocations));
+        else
+            ImGui::TextDisabled("the device cannot count them (no pipelineStatisticsQuery)");
+    }
     ImGui::Text("skinning: %s; device: %s",
                 Graphics3D::getInstance()->getSkinningMode() == Graphics3D::SKINNING_COMPUTE ? "compute shader" : "CPU",
                 vk::currentDevice().name.c_str());

@@ -241,8 +241,9 @@ void ViewerApp::frame() {
     const PixelRect view = state_.viewPixels();
 
     m3g::vk::setDebugView(state_.debug);
+    m3g::vk::setShaderInvocationCounting(state_.countShaders);
     m3g::Graphics3D* g3d = m3g::Graphics3D::getInstance();
-    const auto before = m3g::vk::renderStats().draws;
+    const m3g::vk::RenderStats before = m3g::vk::renderStats();
     const auto t0 = Clock::now();
     g3d->bindTarget(target_.get(), true, 0);
     try {
@@ -267,7 +268,10 @@ void ViewerApp::frame() {
     g3d->releaseTarget();
     state_.renderMs = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
     state_.frameMs = dt;
-    state_.drawsPerFrame = m3g::vk::renderStats().draws - before;
+    const m3g::vk::RenderStats after = m3g::vk::renderStats();
+    state_.drawsPerFrame = after.draws - before.draws;
+    state_.vertexInvocations = after.vertexShaderInvocations - before.vertexShaderInvocations;
+    state_.fragmentInvocations = after.fragmentShaderInvocations - before.fragmentShaderInvocations;
 }
 
 int ViewerApp::run() {
