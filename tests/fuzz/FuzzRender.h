@@ -21,7 +21,10 @@
 //      memory must be back where the first pass left them. (The first pass may grow the
 //      renderer's pools, uniform chunks and sprite quads, to a new high
 //      water mark that the renderer keeps; an identical second pass may not:
-//      growth there is a leak per load.)
+//      growth there is a leak per load.) On a CPU device (lavapipe) both
+//      passes are counted (m3g::vk::setShaderInvocationCounting) and must
+//      shade the same vertices and fragments: the same bytes draw the same
+//      frames, whatever the first pass left in the renderer's caches.
 // Allowed failures are those the API documents for a scene the Loader may
 // legitimately produce: IllegalStateException from animate() (a keyframe
 // sequence that cannot be sampled), render() (no active camera, indices
@@ -180,6 +183,25 @@ inline bool renderPass(std::span<const std::uint8_t> bytes, m3g::Graphics& surfa
 
 }  // namespace detail
 
+/// The vertex and fragment shader invocations of what `pass` renders, where
+/// the device counts them the same way every time (a CPU device; a GPU's
+/// vertex reuse is its own): {0, 0} elsewhere.
+struct Shading {
+    std::uint64_t vertices = 0, fragments = 0;
+};
+template <class Pass>
+Shading countShading(bool counted, Pass pass) {
+    struct Off {
+        ~Off() { m3g::vk::setShaderInvocationCounting(false); }
+    } off;
+    m3g::vk::setShaderInvocationCounting(counted);
+    const m3g::vk::RenderStats s0 = m3g::vk::renderStats();
+    pass();
+    const m3g::vk::RenderStats s1 = m3g::vk::renderStats();
+    return {s1.vertexShaderInvocations - s0.vertexShaderInvocations,
+            s1.fragmentShaderInvocations - s0.fragmentShaderInvocations};
+}
+
 /// Steps 1-5 of the header on bytes as they are (no checksum repair).
 inline void checkRenderOnce(std::span<const std::uint8_t> bytes) {
     using namespace m3g;
@@ -187,10 +209,18 @@ inline void checkRenderOnce(std::span<const std::uint8_t> bytes) {
     static Ref<Graphics> surface(new Graphics(detail::kTargetSize, detail::kTargetSize));
     // Each pass ends with a settle frame, so the balance is read with the
     // pass's objects gone and the GPU done with them.
-    if (!detail::renderPass(bytes, *surface)) return;
+    // currentDevice() makes the device if this is the first input.
+    const bool counted = vk::currentDevice().type == "cpu" && vk::shaderInvocationCountingSupported();
+    bool loaded = false;
+    const Shading first = countShading(counted, [&] { loaded = detail::renderPass(bytes, *surface); });
+    if (!loaded) return;
     const RendererBalance before = RendererBalance::now();
-    detail::renderPass(bytes, *surface);
+    const Shading second = countShading(counted, [&] { detail::renderPass(bytes, *surface); });
     const RendererBalance after = RendererBalance::now();
+    expect(second.vertices == first.vertices && second.fragments == first.fragments,
+           "a second pass over the input shaded " + std::to_string(second.vertices) + " vertices and " +
+               std::to_string(second.fragments) + " fragments, the first " + std::to_string(first.vertices) +
+               " and " + std::to_string(first.fragments));
     expect(after.liveBuffers == before.liveBuffers,
            "GPU buffers left by a second pass over the input: " + std::to_string(before.liveBuffers) + " -> " +
                std::to_string(after.liveBuffers));
