@@ -54,6 +54,11 @@ void install(std::shared_ptr<Context> context) {
 }
 }  // namespace
 
+std::shared_ptr<Context> Context::existing() noexcept {
+    std::lock_guard lock(gContextMutex);
+    return gContext;
+}
+
 std::shared_ptr<Context> Context::shared() {
     std::lock_guard lock(gContextMutex);
     if (!gContext) install(std::shared_ptr<Context>(new Context()));

@@ -67,6 +67,8 @@ public:
     static std::shared_ptr<Context> shared();
     /// True once get() has succeeded.
     static bool exists() noexcept;
+    /// The shared context if it exists, else null; never creates one.
+    static std::shared_ptr<Context> existing() noexcept;
     /// Runs `f` and returns true if the device has not been created yet
     /// (under the lock that creation takes); false otherwise.
     static bool beforeCreation(const std::function<void()>& f);

@@ -75,7 +75,8 @@ std::atomic<bool> gCountShaders{false};
 void setShaderInvocationCounting(bool on) noexcept { gCountShaders = on; }
 bool shaderInvocationCounting() noexcept { return gCountShaders.load(); }
 bool shaderInvocationCountingSupported() noexcept {
-    return Context::exists() && Context::get().pipelineStatisticsSupported();
+    const std::shared_ptr<Context> c = Context::existing();
+    return c && c->pipelineStatisticsSupported();
 }
 std::string lastValidationMessage() {
     std::lock_guard lock(gMessageMutex);
