@@ -89,7 +89,9 @@ public:
     /// (JSR-184 1.1, Graphics3D.render(World)), then makes that camera and
     /// those lights Graphics3D's current ones. Does not animate or align.
     /// NPE if null; ISE if no target, no active camera, the camera is not in
-    /// this World, or the background image's format is not the target's.
+    /// this World, or the background image's format is not the target's;
+    /// ArithmeticException if the active camera's transform to the World is
+    /// singular (as setCamera's, e.g. a zero scale on the camera's path).
     void render(World* world);
     /// Renders a Mesh, Sprite3D or Group (IAE otherwise, NPE if null) with
     /// the current camera and lights; `transform` (null = identity) is the

@@ -115,7 +115,14 @@ void Graphics3D::render(World* world) {
                                                 " is not the target's format ", targetFormat(*this)));
     Transform cameraToWorld;
     camera->getTransformTo(world, &cameraToWorld);
-    setCamera(camera.get(), &cameraToWorld);  // ArithmeticException if singular
+    // As setCamera, and as Nokia's engine (its m3gSetCamera raises an
+    // arithmetic error): a camera whose transform has no inverse (a zero
+    // scale on its path) gives no view.
+    try {
+        setCamera(camera.get(), &cameraToWorld);
+    } catch (const ArithmeticException&) {
+        throw ArithmeticException(detail::str(where, ": the active camera's transform to the World is singular"));
+    }
 
     // The World's lights replace Graphics3D's (JSR-184 1.1, Graphics3D.render(World)).
     std::vector<LightEntry> found;

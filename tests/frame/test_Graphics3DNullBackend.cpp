@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "FrameTestKit.h"
@@ -463,6 +464,26 @@ TEST_F(Graphics3DNull, RenderWorldNeedsItsOwnActiveCameraAndRenderNodeARenderabl
     EXPECT_THROW(g->render(light.get(), nullptr), IllegalArgumentException);
     EXPECT_THROW(g->render(camera.get(), nullptr), IllegalArgumentException);
     EXPECT_TRUE(f.calls().empty());
+}
+
+// A camera whose transform to the World cannot be inverted gives no view:
+// ArithmeticException as setCamera throws (a fuzzed file had a camera scaled
+// by zero), naming render(World); nothing reaches the back end and the
+// current camera stays.
+TEST_F(Graphics3DNull, RenderWorldWithASingularCameraTransformIsArithmetic) {
+    Ref<Image2D> img = begin();
+    Ref<World> world = frametest::worldWithCamera();
+    world->getActiveCamera()->setScale(1.0f, 0.0f, 1.0f);
+    try {
+        g->render(world.get());
+        ADD_FAILURE() << "no exception";
+    } catch (const ArithmeticException& e) {
+        EXPECT_NE(std::string(e.what()).find("Graphics3D::render(World)"), std::string::npos) << e.what();
+    }
+    EXPECT_TRUE(f.calls().empty());
+    EXPECT_EQ(g->getCamera(nullptr).get(), cam.get());
+    world->getActiveCamera()->setScale(1.0f, 1.0f, 1.0f);
+    EXPECT_NO_THROW(g->render(world.get()));
 }
 
 // Moved from tests/vk/test_Misuse.cpp (MisuseBackgroundFormatAgainstTarget)
