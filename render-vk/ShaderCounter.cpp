@@ -25,19 +25,18 @@ void ShaderCounter::prepare() {
 }
 
 void ShaderCounter::begin(VkCommandBuffer cmd) noexcept {
-    begun_ = counting_;
-    if (!begun_) return;
+    if (!counting_) return;
     vkCmdResetQueryPool(cmd, pool_, 0, 1);
     vkCmdBeginQuery(cmd, pool_, 0, 0);
 }
 
 void ShaderCounter::end(VkCommandBuffer cmd) noexcept {
-    if (begun_) vkCmdEndQuery(cmd, pool_, 0);
+    if (counting_) vkCmdEndQuery(cmd, pool_, 0);
 }
 
 void ShaderCounter::collect() {
-    if (!begun_) return;
-    begun_ = false;
+    if (!counting_) return;
+    counting_ = false;
     std::uint64_t counts[2] = {0, 0};
     check(vkGetQueryPoolResults(ctx_.device(), pool_, 0, 1, sizeof(counts), counts, sizeof(counts),
                                 VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),

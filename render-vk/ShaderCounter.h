@@ -31,8 +31,10 @@ public:
 private:
     Context& ctx_;
     VkQueryPool pool_ = VK_NULL_HANDLE;
-    bool counting_ = false;  // the open frame is counted
-    bool begun_ = false;     // its query was begun and not yet collected
+    // The open frame is counted: decided at prepare(), its query recorded by
+    // begin() (the renderer opens every frame it prepares before ending it),
+    // cleared by collect().
+    bool counting_ = false;
 };
 
 }  // namespace m3g::vk
