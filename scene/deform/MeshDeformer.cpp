@@ -208,10 +208,11 @@ MorphAttributeInputs MeshDeformer::morphAttribute(int index) const noexcept {
     return {a.components, a.values[0], std::span<const std::vector<float>>(a.values).subspan(1)};
 }
 
-bool MeshDeformer::update(const Mesh& mesh, Output output) {
+bool MeshDeformer::update(const Mesh& mesh, Output output, Rigid rigid) {
     // A result made for the other output is not a result for this one.
-    if (output != output_) valid_ = false;
+    if (output != output_ || rigid != rigidMode_) valid_ = false;
     output_ = output;
+    rigidMode_ = rigid;
     // The exact class first: a type_info comparison rather than a
     // dynamic_cast's walk, once per SkinnedMesh per frame.
     if (typeid(mesh) == typeid(SkinnedMesh)) return updateSkinned(static_cast<const SkinnedMesh&>(mesh));
@@ -271,6 +272,7 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
         // runs beside a bone run of their bones join it where this CPU's
         // kernels have bone runs (InfluencePartition::runBlock).
         partition_.buildForKernels(table, n);
+        rigidBone_ = table.rigidBone(n);
         tableRevision_ = table.revision();
         ++inputStamp_;
         planOrder(n);
@@ -354,7 +356,10 @@ bool MeshDeformer::updateSkinned(const SkinnedMesh& mesh) {
     skinInputs_.bones = table.bones();
     skinInputs_.weights = table.weights();
     skinInputs_.palette = palette_;
-    if (output_ == Output::InputsOnly) {
+    out_.rigid = rigidMode_ == Rigid::AsTransform && rigidBone_ >= 0 &&
+                 static_cast<std::size_t>(rigidBone_) < palette_.size();
+    if (out_.rigid) out_.rigidTransform = palette_[static_cast<std::size_t>(rigidBone_)];
+    if (output_ == Output::InputsOnly || out_.rigid) {
         finish();
         return true;
     }
@@ -517,6 +522,7 @@ bool MeshDeformer::updateMorphing(const MorphingMesh& mesh) {
             }
         }
         out_.vertexCount = static_cast<int>(n);
+        out_.rigid = false;
         out_.order = {};
         out_.location = {};
         auto size = [&](int attribute, std::vector<float>& out) {

@@ -60,6 +60,17 @@ struct DeformedVertices {
     /// values per vertex; empty for units without coordinates.
     std::array<std::vector<float>, kMaxTextureUnits> texCoords;
     std::array<int, kMaxTextureUnits> texCoordComponents{};
+    /// Set by update() with Rigid::AsTransform for a SkinnedMesh bound
+    /// rigidly: every vertex follows one and the same bone, with weight 1
+    /// (Superscape Swerve exports each part of a character this way:
+    /// otokka_jump2's fifteen meshes). Deforming such a mesh is one affine
+    /// map of all its vertices, so it is left to the consumer's own
+    /// transform: `rigidTransform` is that bone's palette entry (its position
+    /// rows take the VertexBuffer's raw positions, scale and bias folded in;
+    /// its normal rows the raw normals), and positions and normals above are
+    /// not written (what they hold is meaningless while `rigid` is set).
+    bool rigid = false;
+    skin::PaletteEntry rigidTransform{};
 };
 
 /// The kernel inputs (plain spans, shared with back ends that deform on the
@@ -89,15 +100,29 @@ public:
         /// GPU that deforms from the same inputs (render-vk's compute path).
         InputsOnly,
     };
+    /// What update() does with a rigidly bound SkinnedMesh
+    /// (DeformedVertices::rigid).
+    enum class Rigid {
+        /// Deforms it like any other (`output` decides how).
+        Deform,
+        /// Computes its palette only and reports the one transform; the
+        /// caller draws the undeformed vertices through it (the renderer,
+        /// whose model-view then carries the bone: no vertex is skinned or
+        /// uploaded per frame, on the CPU path or the compute path).
+        AsTransform,
+    };
 
     /// Recomputes the deformed vertices of `mesh` (a SkinnedMesh with its
     /// bones as posed now, or a MorphingMesh with its current weights).
     /// Returns true when the deformed vertices changed since the previous
-    /// call (always true on the first call and when `output` differs from
-    /// the previous call's). Returns false and leaves vertices() empty for a
-    /// plain Mesh. Throws IllegalStateException when a MorphingMesh's
-    /// targets do not have the base's set of arrays (JSR-184 1.1, MorphingMesh).
-    bool update(const Mesh& mesh, Output output = Output::Vertices);
+    /// call (always true on the first call and when `output` or `rigid`
+    /// differs from the previous call's). Returns false and leaves vertices()
+    /// empty for a plain Mesh. Throws IllegalStateException when a
+    /// MorphingMesh's targets do not have the base's set of arrays (JSR-184
+    /// 1.1, MorphingMesh). With Rigid::AsTransform, a rigidly bound
+    /// SkinnedMesh gets vertices().rigid and its transform instead of
+    /// deformed vertices (true is then returned when that transform changed).
+    bool update(const Mesh& mesh, Output output = Output::Vertices, Rigid rigid = Rigid::Deform);
 
     const DeformedVertices& vertices() const noexcept { return out_; }
 
@@ -178,6 +203,7 @@ private:
     std::uint64_t inputStamp_ = 0;
     std::uint64_t orderStamp_ = 0;
     Output output_ = Output::Vertices;  // of the last update()
+    Rigid rigidMode_ = Rigid::Deform;   // of the last update()
 
     // ---- Change detection: out_ is valid for exactly these inputs ----
     Kind kind_ = Kind::None;
@@ -211,6 +237,9 @@ private:
     std::vector<float> atRest_;        // 16 per bone
     std::vector<skin::PaletteEntry> palette_, newPalette_;
     bool conformal_ = false;  // PaletteJob::conformal of palette_ (bone runs only)
+    // The one bone of every vertex when the table binds the mesh rigidly
+    // (DeformedVertices::rigid), else -1; found once per change of the table.
+    int rigidBone_ = -1;
     // Per bone, whether its palette entry differs from the last call's (a
     // frame that keeps out_ recomputes only the runs of changed bones).
     std::vector<std::uint8_t> entryChanged_;

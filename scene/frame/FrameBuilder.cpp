@@ -95,46 +95,32 @@ void FrameBuilder::prepareVertices(Entry& e, const VertexBuffer& vb, const Mesh*
         bool changed = sigChanged;
         e.signature = sig;
         VertexLayout& layout = e.layout;
-        if (!mesh) {
-            e.source = VertexSource::Plain;
+        auto plainLayout = [&] {
             layout.deformed = false;
             layout.present = {true, vb.normals() != nullptr, vb.colors() != nullptr, vb.texCoords(0) != nullptr,
                               vb.texCoords(1) != nullptr};
+        };
+        layout.rigid = false;
+        if (!mesh) {
+            e.source = VertexSource::Plain;
+            plainLayout();
         } else {
             if (!e.deformer) e.deformer = std::make_unique<MeshDeformer>();
             MeshDeformer& d = *e.deformer;
-            changed |= d.update(*mesh, gpuDeform ? MeshDeformer::Output::InputsOnly : MeshDeformer::Output::Vertices);
-            const bool skinned = dynamic_cast<const SkinnedMesh*>(mesh) != nullptr;
-            const VertexSource source =
-                !gpuDeform ? VertexSource::Deformed : skinned ? VertexSource::GpuSkinned : VertexSource::GpuMorphed;
-            const bool sourceChanged = source != e.source;
-            changed |= sourceChanged;
-            e.source = source;
-            layout.deformed = true;
-            auto& p = layout.present;
-            p[frame::POSITIONS] = true;
-            if (source == VertexSource::Deformed) {
-                const DeformedVertices& out = d.vertices();
-                p[frame::NORMALS] = !out.normals.empty();
-                p[frame::COLORS] = !out.colors.empty() || vb.colors();
-                for (int u = 0; u < 2; ++u)
-                    p[frame::TEXCOORDS0 + u] = !out.texCoords[static_cast<std::size_t>(u)].empty() || vb.texCoords(u);
-            } else if (skinned) {
-                p[frame::NORMALS] = !d.skinInputs().normals.empty();
-                p[frame::COLORS] = vb.colors() != nullptr;
-                for (int u = 0; u < 2; ++u) p[frame::TEXCOORDS0 + u] = vb.texCoords(u) != nullptr;
+            const bool deformedChanged =
+                d.update(*mesh, gpuDeform ? MeshDeformer::Output::InputsOnly : MeshDeformer::Output::Vertices,
+                         MeshDeformer::Rigid::AsTransform);
+            if (d.vertices().rigid) {
+                // The VertexBuffer's own vertices, drawn through the bone's
+                // transform (translateSubmesh): uploaded once, not per pose.
+                changed |= e.source != VertexSource::Plain;
+                e.source = VertexSource::Plain;
+                plainLayout();
+                layout.rigid = true;
+                layout.rigidTransform = d.vertices().rigidTransform;
             } else {
-                p[frame::NORMALS] = d.morphAttribute(MeshDeformer::kMorphNormals).components > 0;
-                p[frame::COLORS] = d.morphAttribute(MeshDeformer::kMorphColors).components > 0;
-                for (int u = 0; u < 2; ++u)
-                    p[frame::TEXCOORDS0 + u] = d.morphAttribute(MeshDeformer::kMorphTexCoords + u).components > 0;
-            }
-            // The kernel's static inputs, or the streams the host writes
-            // beside its outputs, changed.
-            if (source != VertexSource::Deformed &&
-                (sigChanged || sourceChanged || d.inputStamp() != e.inputStamp || e.inputVersion == 0)) {
-                ++e.inputVersion;
-                e.inputStamp = d.inputStamp();
+                changed |= deformedChanged;
+                prepareDeformed(e, vb, *mesh, gpuDeform, sigChanged, changed);
             }
         }
         if (changed || e.version == 0) ++e.version;
@@ -145,6 +131,44 @@ void FrameBuilder::prepareVertices(Entry& e, const VertexBuffer& vb, const Mesh*
     ref.source = e.source;
     ref.vertexCount = vb.getVertexCount();
     ref.present = e.layout.present;
+}
+
+void FrameBuilder::prepareDeformed(Entry& e, const VertexBuffer& vb, const Mesh& mesh, bool gpuDeform,
+                                   bool sigChanged, bool& changed) {
+    const MeshDeformer& d = *e.deformer;
+    VertexLayout& layout = e.layout;
+    const bool skinned = dynamic_cast<const SkinnedMesh*>(&mesh) != nullptr;
+    const VertexSource source =
+        !gpuDeform ? VertexSource::Deformed : skinned ? VertexSource::GpuSkinned : VertexSource::GpuMorphed;
+    const bool sourceChanged = source != e.source;
+    changed |= sourceChanged;
+    e.source = source;
+    layout.deformed = true;
+    auto& p = layout.present;
+    p[frame::POSITIONS] = true;
+    if (source == VertexSource::Deformed) {
+        const DeformedVertices& out = d.vertices();
+        p[frame::NORMALS] = !out.normals.empty();
+        p[frame::COLORS] = !out.colors.empty() || vb.colors();
+        for (int u = 0; u < 2; ++u)
+            p[frame::TEXCOORDS0 + u] = !out.texCoords[static_cast<std::size_t>(u)].empty() || vb.texCoords(u);
+    } else if (skinned) {
+        p[frame::NORMALS] = !d.skinInputs().normals.empty();
+        p[frame::COLORS] = vb.colors() != nullptr;
+        for (int u = 0; u < 2; ++u) p[frame::TEXCOORDS0 + u] = vb.texCoords(u) != nullptr;
+    } else {
+        p[frame::NORMALS] = d.morphAttribute(MeshDeformer::kMorphNormals).components > 0;
+        p[frame::COLORS] = d.morphAttribute(MeshDeformer::kMorphColors).components > 0;
+        for (int u = 0; u < 2; ++u)
+            p[frame::TEXCOORDS0 + u] = d.morphAttribute(MeshDeformer::kMorphTexCoords + u).components > 0;
+    }
+    // The kernel's static inputs, or the streams the host writes
+    // beside its outputs, changed.
+    if (source != VertexSource::Deformed &&
+        (sigChanged || sourceChanged || d.inputStamp() != e.inputStamp || e.inputVersion == 0)) {
+        ++e.inputVersion;
+        e.inputStamp = d.inputStamp();
+    }
 }
 
 void FrameBuilder::build(const RenderQueue& queue, const frame::ViewState& view, bool gpuDeform,

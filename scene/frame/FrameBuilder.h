@@ -81,6 +81,10 @@ private:
     Entry& entry(const Object3D& object);
     /// Refreshes `e` for this call and fills `ref`.
     void prepareVertices(Entry& e, const VertexBuffer& vb, const Mesh* mesh, bool gpuDeform, frame::VertexRef& ref);
+    /// prepareVertices' part for a mesh deformed on the CPU or the GPU
+    /// (not a rigid one): its source and layout, and whether they changed.
+    void prepareDeformed(Entry& e, const VertexBuffer& vb, const Mesh& mesh, bool gpuDeform, bool sigChanged,
+                         bool& changed);
     const Object3D* object(std::uint64_t id) const;
 
     std::unordered_map<std::uint64_t, Entry> entries_;

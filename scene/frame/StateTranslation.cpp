@@ -132,6 +132,29 @@ void normalMatrix(const Transform& modelView, float* out) {
         for (int r = 0; r < 3; ++r) out[c * 4 + r] = n[c][r];
 }
 
+/// `modelView` and `normals` (column major, 4x4) multiplied on the right by
+/// a palette entry's position rows and normal rows: what the draw of an
+/// undeformed rigid mesh needs to match the skinned one, where the vertex
+/// shader applies the model-view to the skinned position and the normal
+/// matrix to the skinned normal (both products in double, rounded once).
+void withRigidTransform(const skin::PaletteEntry& e, float* modelView, float* normals) {
+    auto multiply = [](float* m, const float* rows, bool translate) {
+        float out[16];
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) {
+                // Column c of the entry as a 4x4 matrix: rows 0..2, then
+                // (0, 0, 0, 1); the normal rows have no translation.
+                double sum = 0.0;
+                for (int k = 0; k < 3; ++k) sum += double{m[k * 4 + r]} * rows[k * 4 + c];
+                if (c == 3) sum += translate ? double{m[12 + r]} : 0.0;
+                out[c * 4 + r] = static_cast<float>(c == 3 && !translate ? m[12 + r] : sum);
+            }
+        std::memcpy(m, out, sizeof(out));
+    };
+    multiply(modelView, e.position, true);
+    multiply(normals, e.normal, false);
+}
+
 }  // namespace
 
 frame::PipelineKey pipelineKey(const DrawUniforms& u, const CompositingMode* cm) noexcept {
@@ -172,7 +195,10 @@ void translateSubmesh(const RenderQueue& queue, const RenderItem& item, const Ve
     toColumns(item.modelView, u.modelView);
     std::memcpy(u.projection, projection, sizeof(u.projection));
     normalMatrix(item.modelView, u.normalMatrix);
-    if (layout.deformed) {
+    if (layout.rigid) {
+        withRigidTransform(layout.rigidTransform, u.modelView, u.normalMatrix);
+        u.positionScaleBias[3] = 1.0f;
+    } else if (layout.deformed) {
         u.positionScaleBias[3] = 1.0f;
     } else {
         const auto& b = vb.positionBias();

@@ -14,6 +14,7 @@
 
 #include <m3g/Forward.h>
 #include <m3g/Transform.h>
+#include <m3g/skin/Palette.h>
 
 namespace m3g::detail {
 
@@ -54,6 +55,13 @@ void fillFog(frame::DrawUniforms& u, const Fog* fog) noexcept;
 struct VertexLayout {
     std::array<bool, frame::STREAM_COUNT> present{};
     bool deformed = false;
+    /// A rigidly bound SkinnedMesh drawn from its undeformed vertices
+    /// (DeformedVertices::rigid): its bone's palette entry, multiplied into
+    /// the model-view (raw positions: the entry holds the scale and bias)
+    /// and the normal matrix, so that the draw places every vertex where
+    /// skinning it would have.
+    bool rigid = false;
+    skin::PaletteEntry rigidTransform{};
 };
 
 /// The uniforms, textures, pipeline key and rasterizer state of one

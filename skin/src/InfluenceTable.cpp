@@ -32,6 +32,18 @@ int InfluenceTable::count(int v) const noexcept {
     return c;
 }
 
+int InfluenceTable::rigidBone(std::size_t vertices) const noexcept {
+    if (vertices == 0 || vertices > static_cast<std::size_t>(vertexCount_)) return -1;
+    const int first = bone(0, 0);
+    // A vertex's weights are normalised over its filled slots: one slot
+    // has weight 1 exactly.
+    for (std::size_t i = 0; i < vertices; ++i) {
+        const int v = static_cast<int>(i);
+        if (count(v) != 1 || bone(v, 0) != first || weight(v, 0) != 1.0f) return -1;
+    }
+    return first;
+}
+
 void InfluenceTable::rebuildVertex(int v) {
     // Sort the candidate influences and keep the N best; normalise over them.
     const std::size_t base = static_cast<std::size_t>(v) * n_;

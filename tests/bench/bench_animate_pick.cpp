@@ -4,8 +4,12 @@
 //   BM_AnimateSynthetic    a World of 1,000 animated groups (translation +
 //                          orientation each, two blended controllers)
 //   BM_SkinnedCorpusFrame  a skinned corpus file's frame: animate(), then
-//                          every SkinnedMesh deformed (MeshDeformer: bone
-//                          transforms, palette, kernels)
+//                          every SkinnedMesh deformed as the renderer does it
+//                          (MeshDeformer: bone transforms, palette, kernels;
+//                          a rigidly bound mesh reports its bone's transform
+//                          instead, Rigid::AsTransform)
+//   BM_SkinnedCorpusFrameAllVertices  the same with every vertex deformed,
+//                          rigid meshes too (Rigid::Deform)
 //   BM_SkinnedCorpusAnimate  the same frames' animate() alone
 //   BM_PickRay/Camera100k  one pick on a 100,000-triangle mesh
 //   BM_PickRayMiss100k     a ray beside it (bounding-box rejection)
@@ -158,16 +162,28 @@ bool loadSkinned(benchmark::State& state, const SkinnedFile& file, SkinnedScene&
     return true;
 }
 
-void BM_SkinnedCorpusFrame(benchmark::State& state, const SkinnedFile& file) {
+void skinnedCorpusFrames(benchmark::State& state, const SkinnedFile& file, detail::MeshDeformer::Rigid rigid) {
     SkinnedScene f;
     if (!loadSkinned(state, file, f)) return;
     std::vector<detail::MeshDeformer> deformers(f.meshes.size());
     int t = 0;
     for (auto _ : state) {
         for (const auto& root : f.loaded.roots) benchmark::DoNotOptimize(root->animate(t));
-        for (std::size_t i = 0; i < f.meshes.size(); ++i) benchmark::DoNotOptimize(deformers[i].update(*f.meshes[i]));
+        for (std::size_t i = 0; i < f.meshes.size(); ++i)
+            benchmark::DoNotOptimize(deformers[i].update(*f.meshes[i], detail::MeshDeformer::Output::Vertices, rigid));
         t = (t + 33) % f.period;
     }
+    std::size_t rigidMeshes = 0;
+    for (const auto& d : deformers) rigidMeshes += d.vertices().rigid;
+    state.counters["rigid_meshes"] = static_cast<double>(rigidMeshes);
+}
+
+void BM_SkinnedCorpusFrame(benchmark::State& state, const SkinnedFile& file) {
+    skinnedCorpusFrames(state, file, detail::MeshDeformer::Rigid::AsTransform);
+}
+
+void BM_SkinnedCorpusFrameAllVertices(benchmark::State& state, const SkinnedFile& file) {
+    skinnedCorpusFrames(state, file, detail::MeshDeformer::Rigid::Deform);
 }
 
 // The animation share of BM_SkinnedCorpusFrame: the same files and times,
@@ -183,11 +199,14 @@ void BM_SkinnedCorpusAnimate(benchmark::State& state, const SkinnedFile& file) {
 }
 
 // One benchmark per file, named after it: BM_SkinnedCorpusFrame/test,
-// BM_SkinnedCorpusAnimate/test.
+// BM_SkinnedCorpusFrameAllVertices/test, BM_SkinnedCorpusAnimate/test.
 const int kSkinnedCorpusRegistered = [] {
     for (const SkinnedFile& f : kSkinnedFiles) {
         benchmark::RegisterBenchmark((std::string("BM_SkinnedCorpusFrame/") + f.name).c_str(),
                                      [&f](benchmark::State& state) { BM_SkinnedCorpusFrame(state, f); })
+            ->Unit(benchmark::kMicrosecond);
+        benchmark::RegisterBenchmark((std::string("BM_SkinnedCorpusFrameAllVertices/") + f.name).c_str(),
+                                     [&f](benchmark::State& state) { BM_SkinnedCorpusFrameAllVertices(state, f); })
             ->Unit(benchmark::kMicrosecond);
         benchmark::RegisterBenchmark((std::string("BM_SkinnedCorpusAnimate/") + f.name).c_str(),
                                      [&f](benchmark::State& state) { BM_SkinnedCorpusAnimate(state, f); })

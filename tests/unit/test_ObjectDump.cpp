@@ -431,12 +431,21 @@ TEST(ObjectDump, SkinnedMeshBonesAndSkeleton) {
     EXPECT_EQ(layout.at("compactBoneRuns").get<int>(), 0);
     EXPECT_EQ(layout.at("compactBoneRunVertices").get<int>(), 0);
     EXPECT_EQ(layout.at("compactLooseVertices").get<int>(), 3);
+    EXPECT_FALSE(layout.at("rigidBinding").get<bool>());  // two bones
     // Which kernels the split is for, and their run block: 16 lanes with
     // AVX-512, 8 with AVX2, none where bone runs are vertex lists.
     const std::string kernels = layout.at("kernels").get<std::string>();
     const int block = kernels == "avx512" ? 16 : kernels == "avx2" ? 8 : 0;
     EXPECT_TRUE(kernels == "avx512" || kernels == "avx2" || kernels == "sse2" || kernels == "scalar") << kernels;
     EXPECT_EQ(layout.at("runBlock").get<int>(), block) << kernels;
+
+    // Every vertex on `upper` alone (twice added: one slot, weight 1): a
+    // rigid binding.
+    Ref<Group> bone = new Group();
+    Ref<SkinnedMesh> rigid = new SkinnedMesh(vb, ib, nullptr, bone);
+    rigid->addTransform(bone, 1, 0, 5);
+    rigid->addTransform(bone, 2, 4, 4);
+    EXPECT_TRUE(object(parse(dump(rigid)), 0).at("influenceLayout").at("rigidBinding").get<bool>());
 }
 
 TEST(ObjectDump, BonesAndAlignmentTargetsOutsideReferencesAreIncluded) {

@@ -589,3 +589,121 @@ TEST(SkinnedMeshDeform, InterleavedInfluencesComeOutInInfluenceOrder) {
         expectNormal(d, v, normalised(unit(0), unit(0), unit(1000)));
     }
 }
+
+// Rigid binding (Rigid::AsTransform): every vertex on one bone, weight 1.
+// The bone is posed away from its rest pose with a rotation, a non-uniform
+// scale and a translation, and the VertexBuffer has a scale and bias: the
+// reported transform maps each raw position to the position the kernels
+// give in Rigid::Deform (hand-computed for vertex 0), and its normal rows
+// are the inverse transpose of the bone's 3x3.
+TEST(SkinnedMeshDeform, RigidBindingReportsTheBoneInsteadOfDeforming) {
+    Rig r(makeVB({10, 0, 0, /**/ 0, 10, 0, /**/ 3, -4, 7, /**/ -6, 2, 9}, 0.5f, {1, 2, 3},
+                 {32767, 0, 0, /**/ 0, 32767, 0, /**/ 0, 0, 32767, /**/ 1000, -2000, 3000}),
+          2);
+    r.mesh->addTransform(r.bones[1], 1, 0, 2);
+    r.mesh->addTransform(r.bones[1], 3, 2, 2);  // another weight, the same bone: still weight 1
+    r.bones[1]->setTranslation(0, 0, 5);
+    r.bones[1]->setScale(2, 1, 1);
+    r.bones[1]->setOrientation(90, 0, 0, 1);
+    using Output = MeshDeformer::Output;
+    using Rigid = MeshDeformer::Rigid;
+    MeshDeformer rigid, deformed;
+    ASSERT_TRUE(rigid.update(*r.mesh, Output::Vertices, Rigid::AsTransform));
+    ASSERT_TRUE(deformed.update(*r.mesh, Output::Vertices, Rigid::Deform));
+    ASSERT_TRUE(rigid.vertices().rigid);
+    EXPECT_FALSE(deformed.vertices().rigid);
+    const skin::PaletteEntry& e = rigid.vertices().rigidTransform;
+    auto apply = [](const float* rows, double x, double y, double z, int row, bool translate) {
+        return rows[row * 4] * x + rows[row * 4 + 1] * y + rows[row * 4 + 2] * z + (translate ? rows[row * 4 + 3] : 0.0);
+    };
+    // Vertex 0: 0.5 (10, 0, 0) + (1, 2, 3) = (6, 2, 3); the bone's transform
+    // T(0, 0, 5) R(90 about z) S(2, 1, 1): S -> (12, 2, 3), R -> (-2, 12, 3),
+    // T -> (-2, 12, 8).
+    EXPECT_NEAR(apply(e.position, 10, 0, 0, 0, true), -2.0, 1e-5);
+    EXPECT_NEAR(apply(e.position, 10, 0, 0, 1, true), 12.0, 1e-5);
+    EXPECT_NEAR(apply(e.position, 10, 0, 0, 2, true), 8.0, 1e-5);
+    expectPosition(deformed, 0, -2, 12, 8);
+    const Shorts raw = {10, 0, 0, 0, 10, 0, 3, -4, 7, -6, 2, 9};
+    const Shorts rawNormals = {32767, 0, 0, 0, 32767, 0, 0, 0, 32767, 1000, -2000, 3000};
+    for (int v = 0; v < 4; ++v) {
+        double p[3], n[3];
+        for (int c = 0; c < 3; ++c) {
+            p[c] = apply(e.position, raw[v * 3], raw[v * 3 + 1], raw[v * 3 + 2], c, true);
+            n[c] = apply(e.normal, unit(rawNormals[v * 3]), unit(rawNormals[v * 3 + 1]), unit(rawNormals[v * 3 + 2]),
+                         c, false);
+        }
+        expectPosition(deformed, v, p[0], p[1], p[2]);
+        expectNormal(deformed, v, normalised(n[0], n[1], n[2]), 1e-5);
+    }
+    // Normal x (1, 0, 0) after S(2, 1, 1)'s inverse transpose and R: (0, 1/2, 0), that is +y.
+    const auto nx = normalised(apply(e.normal, 1, 0, 0, 0, false), apply(e.normal, 1, 0, 0, 1, false),
+                               apply(e.normal, 1, 0, 0, 2, false));
+    EXPECT_NEAR(nx[1], 1.0, 1e-6);
+
+    // The pose moves: the transform follows and update() says so; it does
+    // not move: nothing changed.
+    EXPECT_FALSE(rigid.update(*r.mesh, Output::Vertices, Rigid::AsTransform));
+    r.bones[1]->setTranslation(0, 0, 6);
+    EXPECT_TRUE(rigid.update(*r.mesh, Output::Vertices, Rigid::AsTransform));
+    EXPECT_NEAR(rigid.vertices().rigidTransform.position[11], 6.0 + 3.0, 1e-5);  // bias z 3, then + 6
+    // Asked to deform after all: the vertices, as a fresh deformer makes them.
+    EXPECT_TRUE(rigid.update(*r.mesh, Output::Vertices, Rigid::Deform));
+    EXPECT_FALSE(rigid.vertices().rigid);
+    MeshDeformer fresh;
+    ASSERT_TRUE(fresh.update(*r.mesh));
+    EXPECT_EQ(rigid.vertices().positions, fresh.vertices().positions);
+    EXPECT_EQ(rigid.vertices().normals, fresh.vertices().normals);
+    // The compute path's output mode reports it too.
+    EXPECT_TRUE(rigid.update(*r.mesh, Output::InputsOnly, Rigid::AsTransform));
+    EXPECT_TRUE(rigid.vertices().rigid);
+}
+
+TEST(SkinnedMeshDeform, RigidBindingNeedsOneBoneOnEveryVertex) {
+    using Output = MeshDeformer::Output;
+    using Rigid = MeshDeformer::Rigid;
+    auto rigid = [](Rig& r) {
+        MeshDeformer d;
+        d.update(*r.mesh, Output::Vertices, Rigid::AsTransform);
+        return d.vertices().rigid;
+    };
+    const Shorts three = {1, 0, 0, /**/ 0, 1, 0, /**/ 0, 0, 1};
+    {
+        Rig r(makeVB(three), 2);  // two bones, one per part
+        r.mesh->addTransform(r.bones[0], 1, 0, 2);
+        r.mesh->addTransform(r.bones[1], 1, 2, 1);
+        EXPECT_FALSE(rigid(r));
+    }
+    {
+        Rig r(makeVB(three), 2);  // vertex 1 blends two bones
+        r.mesh->addTransform(r.bones[0], 1, 0, 3);
+        r.mesh->addTransform(r.bones[1], 1, 1, 1);
+        EXPECT_FALSE(rigid(r));
+    }
+    {
+        Rig r(makeVB(three), 1);  // vertex 2 has no bone (beyond the table)
+        r.mesh->addTransform(r.bones[0], 1, 0, 2);
+        EXPECT_FALSE(rigid(r));
+    }
+    {
+        Rig r(makeVB(three), 1);  // no bone at all
+        EXPECT_FALSE(rigid(r));
+    }
+    {
+        Rig r(makeVB(three), 1);  // the binding becomes rigid, then stops being
+        r.mesh->addTransform(r.bones[0], 1, 0, 2);
+        MeshDeformer d;
+        d.update(*r.mesh, Output::Vertices, Rigid::AsTransform);
+        EXPECT_FALSE(d.vertices().rigid);
+        r.mesh->addTransform(r.bones[0], 1, 2, 1);
+        EXPECT_TRUE(d.update(*r.mesh, Output::Vertices, Rigid::AsTransform));
+        EXPECT_TRUE(d.vertices().rigid);
+        Ref<Group> other = new Group();
+        r.skeleton->addChild(other);
+        r.mesh->addTransform(other, 1, 2, 1);
+        other->setTranslation(0, 0, 4);  // moved from its rest pose
+        EXPECT_TRUE(d.update(*r.mesh, Output::Vertices, Rigid::AsTransform));
+        EXPECT_FALSE(d.vertices().rigid);
+        expectPosition(d, 0, 1, 0, 0);
+        expectPosition(d, 2, 0, 0, 3);  // half at rest, half moved by (0, 0, 4)
+    }
+}

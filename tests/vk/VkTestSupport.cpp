@@ -79,4 +79,14 @@ void VkTest::expectGolden(const m3g::Image2D& image, const std::string& name, in
     }
 }
 
+void SkinningModeTest::SetUp() {
+    VkTest::SetUp();
+    mode_ = m3g::Graphics3D::getInstance()->getSkinningMode();
+}
+
+void SkinningModeTest::TearDown() {
+    m3g::Graphics3D::getInstance()->setSkinningMode(mode_);
+    VkTest::TearDown();
+}
+
 }  // namespace m3gtest

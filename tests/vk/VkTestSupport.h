@@ -43,4 +43,14 @@ protected:
     std::uint64_t messagesBefore_ = 0;
 };
 
+/// A device test that changes Graphics3D's skinning mode: leaves it as it
+/// found it (M3G_SKINNING may have set it for the whole run).
+class SkinningModeTest : public VkTest {
+protected:
+    void SetUp() override;
+    void TearDown() override;
+
+    int mode_ = 0;
+};
+
 }  // namespace m3gtest

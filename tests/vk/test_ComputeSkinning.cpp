@@ -42,20 +42,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// Leaves Graphics3D's skinning mode as it found it (M3G_SKINNING may have
-/// set it for the whole run).
-class ComputeSkinningTest : public VkTest {
-protected:
-    void SetUp() override {
-        VkTest::SetUp();
-        mode_ = Graphics3D::getInstance()->getSkinningMode();
-    }
-    void TearDown() override {
-        Graphics3D::getInstance()->setSkinningMode(mode_);
-        VkTest::TearDown();
-    }
-    int mode_ = Graphics3D::SKINNING_CPU;
-};
+class ComputeSkinningTest : public m3gtest::SkinningModeTest {};
 
 constexpr double kRelative = 1e-5;
 constexpr double kFloorUlps = 1e-6;

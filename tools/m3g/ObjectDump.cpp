@@ -355,6 +355,10 @@ struct Dumper {
         j["compactBoneRuns"] = boneRuns;
         j["compactBoneRunVertices"] = boneRunVertices;
         j["compactLooseVertices"] = compactLoose;
+        // Every vertex on one bone: the renderer draws the mesh through that
+        // bone's transform and skins nothing per frame (docs/skinning.md,
+        // "Rigid binding").
+        j["rigidBinding"] = table.rigidBone(vertices) >= 0;
         // The compact split depends on the kernels this CPU runs (short
         // runs join their bone set's bone run where there is a bone-run
         // kernel, InfluencePartition::runBlock): say which.

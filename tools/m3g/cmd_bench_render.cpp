@@ -2,7 +2,7 @@
 // headless (the figures in docs/rendering.md, "Measuring"). Not a test: it
 // prints.
 //
-//   m3g bench render FILE... [--size WxH] [--frames N] [--invocations]
+//   m3g bench render FILE... [--size WxH] [--frames N] [--invocations] [--animate MS]
 //
 // Per file: first-frame latency (a fresh renderer: pipeline and upload
 // work included); steady-state wall time and process CPU time per frame (all
@@ -16,7 +16,13 @@
 // Graphics surface. With --invocations, also the vertex and fragment shader
 // invocations per frame the device counted (a pipeline-statistics query around
 // each frame; `-` where the device cannot count them). M3G_VK_PREWARM=1/0
-// forces pipeline pre-warming on or off.
+// forces pipeline pre-warming on or off. With --animate MS, each frame
+// first animates the World MS milliseconds later than the last (inside the
+// timed part, as a game's loop does: animation, skinning, uploads), world
+// time starting again from 0 after the longest KeyframeSequence's duration
+// so that the content keeps moving; without it every frame draws the pose
+// at time 0.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -52,21 +58,32 @@ double wallSeconds() {
 
 struct BenchRenderArgs {
     std::vector<std::string> files;
-    std::string size, frames;
+    std::string size, frames, animate;
     bool invocations = false;
 };
+
+/// The longest KeyframeSequence duration among `loaded`'s objects (at least 1 ms).
+int animationPeriod(const m3g::LoadResult& loaded) {
+    int period = 1;
+    for (const auto& o : loaded.objects)
+        if (const auto* k = dynamic_cast<const m3g::KeyframeSequence*>(o.get())) period = std::max(period, k->getDuration());
+    return period;
+}
 
 int benchRender(const BenchRenderArgs& args) {
     int width = 320, height = 240, frames = 100;
     if (!args.size.empty()) parseSizeOption("--size", args.size, width, height);
     if (!args.frames.empty()) frames = parseIntOption("--frames", args.frames, 1, "a positive integer");
+    const int step = args.animate.empty() ? 0 : parseIntOption("--animate", args.animate, 1, "a positive number of milliseconds");
     const std::vector<std::string>& files = args.files;
     // Every file is checked before the first is measured: a typo should not
     // cost a benchmark run.
     for (const std::string& file : files) requireInputFile(file);
     int failed = 0;
     m3g::Graphics3D* g = m3g::Graphics3D::getInstance();
-    std::printf("%dx%d, %d frames per file\n", width, height, frames);
+    std::printf("%dx%d, %d frames per file", width, height, frames);
+    if (step > 0) std::printf(", animated %d ms a frame", step);
+    std::printf("\n");
     std::printf("%-40s %7s %9s %9s %9s %8s %9s %6s %8s %8s", "file", "draws", "first ms", "ms/frame", "fps", "cpu ms",
                 "us/draw", "pipes", "wait ms", "read ms");
     if (args.invocations) std::printf(" %10s %10s", "vs/frame", "fs/frame");
@@ -77,9 +94,15 @@ int benchRender(const BenchRenderArgs& args) {
             m3g::LoadResult loaded = loadInput(file, false);
             PreparedScene scene = prepareScene(loaded, width, height);
             scene.world->animate(0);
+            const int period = animationPeriod(loaded);
+            int time = 0;
             m3g::Ref<m3g::Graphics> target(new m3g::Graphics(width, height));
             g->releaseRenderer();  // first frame from a fresh renderer
             auto frame = [&](double* renderCpu) {
+                if (step > 0) {
+                    scene.world->animate(time);
+                    time = static_cast<int>((static_cast<long long>(time) + step) % period);
+                }
                 g->bindTarget(target.get(), true, 0);
                 g->clear(nullptr);  // opens the frame (target upload) outside the timed part
                 const double c0 = threadCpuSeconds();
@@ -147,6 +170,10 @@ void addBenchRenderCommand(CLI::App& bench, CommandTable& table) {
     app->add_flag("--invocations", args->invocations,
                   "also count the vertex and fragment shader invocations per frame (a Vulkan pipeline-statistics "
                   "query; lavapipe counts fragments in whole 4x4 blocks)");
+    app->add_option("--animate", args->animate,
+                    "animate the World MS milliseconds further before each frame, inside the timed part (animation, "
+                    "skinning and uploads counted; time wraps after the longest keyframe sequence)")
+        ->type_name("MS");
     table[app] = [args] { return benchRender(*args); };
 }
 

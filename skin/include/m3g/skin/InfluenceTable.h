@@ -12,6 +12,7 @@
 // later calls change the accumulated weights).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <unordered_map>
@@ -50,6 +51,12 @@ public:
     /// Vertices influenced by `bone` (among the selected N slots) and their
     /// normalised weights, in vertex order. Returns the count.
     int boneVertices(int bone, std::vector<int>* vertices, std::vector<float>* weights) const;
+
+    /// The one bone that every vertex in [0, vertices) follows, with weight
+    /// 1 (one filled slot each, the same bone), or -1 (some vertex blends
+    /// bones, follows another bone or none, or `vertices` is 0). Such a
+    /// rigid binding deforms every vertex by one affine map. O(vertices).
+    int rigidBone(std::size_t vertices) const noexcept;
 
     /// Incremented by every add(); lets a renderer know the table changed.
     std::uint32_t revision() const noexcept { return revision_; }
