@@ -132,11 +132,12 @@ void normalMatrix(const Transform& modelView, float* out) {
         for (int r = 0; r < 3; ++r) out[c * 4 + r] = n[c][r];
 }
 
-/// `modelView` and `normals` (column major, 4x4) multiplied on the right by
-/// a palette entry's position rows and normal rows: what the draw of an
-/// undeformed rigid mesh needs to match the skinned one, where the vertex
-/// shader applies the model-view to the skinned position and the normal
-/// matrix to the skinned normal (both products in double, rounded once).
+/// `modelView` and `normals` (column major, 4x4; null: left alone)
+/// multiplied on the right by a palette entry's position rows and normal
+/// rows: what the draw of an undeformed rigid mesh needs to match the
+/// skinned one, where the vertex shader applies the model-view to the
+/// skinned position and the normal matrix to the skinned normal (both
+/// products in double, rounded once).
 void withRigidTransform(const skin::PaletteEntry& e, float* modelView, float* normals) {
     auto multiply = [](float* m, const float* rows, bool translate) {
         float out[16];
@@ -152,7 +153,7 @@ void withRigidTransform(const skin::PaletteEntry& e, float* modelView, float* no
         std::memcpy(m, out, sizeof(out));
     };
     multiply(modelView, e.position, true);
-    multiply(normals, e.normal, false);
+    if (normals) multiply(normals, e.normal, false);
 }
 
 }  // namespace
@@ -196,7 +197,10 @@ void translateSubmesh(const RenderQueue& queue, const RenderItem& item, const Ve
     std::memcpy(u.projection, projection, sizeof(u.projection));
     normalMatrix(item.modelView, u.normalMatrix);
     if (layout.rigid) {
-        withRigidTransform(layout.rigidTransform, u.modelView, u.normalMatrix);
+        // Without normals the shader lights OpenGL's default normal, which
+        // skinning leaves alone (it only has the model-view's normal matrix).
+        withRigidTransform(layout.rigidTransform, u.modelView,
+                           layout.present[frame::NORMALS] ? u.normalMatrix : nullptr);
         u.positionScaleBias[3] = 1.0f;
     } else if (layout.deformed) {
         u.positionScaleBias[3] = 1.0f;

@@ -665,6 +665,46 @@ TEST(StateTranslation, NormalMatrixIsTheInverseTranspose) {
     EXPECT_NEAR(s.u.normalMatrix[10], 2.0f, 1e-6f);
 }
 
+TEST(StateTranslation, RigidTransformGoesIntoModelViewAndNormalMatrix) {
+    // A rigid binding (VertexLayout::rigid): the palette entry P (position
+    // rows) = translate (1, 2, 3) x scale (2, 1, 1), N (normal rows) = its
+    // inverse transpose, diag(0.5, 1, 1); the model-view M = translate
+    // (0, 0, -5) x rotate 90 degrees about z, which maps x to y and y to -x.
+    // Model-view sent: M P, so raw (1, 0, 0) -> P (3, 2, 3) -> M (-2, 3, -2);
+    // normal matrix: M's (the rotation itself) times N, so x -> 0.5 y.
+    frametest::Quad q = quad();
+    Ref<Appearance> a(new Appearance());
+    VertexLayout rigid = plainLayout(*q.vb);
+    rigid.present[NORMALS] = true;  // as with a normal array
+    rigid.rigid = true;
+    const float position[12] = {2, 0, 0, 1, 0, 1, 0, 2, 0, 0, 1, 3};
+    const float normal[12] = {0.5f, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+    std::memcpy(rigid.rigidTransform.position, position, sizeof position);
+    std::memcpy(rigid.rigidTransform.normal, normal, sizeof normal);
+    Transform mv = frametest::translation(0, 0, -5);
+    mv.postRotate(90, 0, 0, 1);
+    const Translated t = translate(q.vb.get(), q.ib.get(), a.get(), mv, DrawOptions(), {}, 2, &rigid);
+    auto apply = [](const float* m, float x, float y, float z, float w, int row) {
+        return m[row] * x + m[4 + row] * y + m[8 + row] * z + m[12 + row] * w;
+    };
+    EXPECT_NEAR(apply(t.u.modelView, 1, 0, 0, 1, 0), -2.0f, 1e-6f);
+    EXPECT_NEAR(apply(t.u.modelView, 1, 0, 0, 1, 1), 3.0f, 1e-6f);
+    EXPECT_NEAR(apply(t.u.modelView, 1, 0, 0, 1, 2), -2.0f, 1e-6f);
+    EXPECT_NEAR(apply(t.u.modelView, 1, 0, 0, 1, 3), 1.0f, 1e-6f);
+    EXPECT_NEAR(apply(t.u.normalMatrix, 1, 0, 0, 0, 0), 0.0f, 1e-6f);
+    EXPECT_NEAR(apply(t.u.normalMatrix, 1, 0, 0, 0, 1), 0.5f, 1e-6f);
+    EXPECT_NEAR(apply(t.u.normalMatrix, 0, 1, 0, 0, 0), -1.0f, 1e-6f);  // y -> -x, N leaves y
+    // The entry holds the VertexBuffer's scale and bias: none in the uniforms.
+    expectRgba(t.u.positionScaleBias, 0, 0, 0, 1);
+    // Without normals the default normal is lit through the model-view's
+    // normal matrix alone, as with the skinned vertices.
+    rigid.present[NORMALS] = false;
+    const Translated n = translate(q.vb.get(), q.ib.get(), a.get(), mv, DrawOptions(), {}, 2, &rigid);
+    const Translated plain = translate(q.vb.get(), q.ib.get(), a.get(), mv);
+    for (int i = 0; i < 16; ++i) EXPECT_EQ(n.u.normalMatrix[i], plain.u.normalMatrix[i]) << i;
+    EXPECT_NEAR(apply(n.u.modelView, 1, 0, 0, 1, 1), 3.0f, 1e-6f);
+}
+
 TEST(StateTranslation, VertexStreamFlags) {
     frametest::Quad q = quad();
     Ref<Appearance> a(new Appearance());

@@ -21,7 +21,12 @@ namespace {
 
 constexpr std::uint32_t kBackground = 0xFF202020u;
 
-class RigidSkinningTest : public m3gtest::SkinningModeTest {};
+class RigidSkinningTest : public m3gtest::SkinningModeTest {
+protected:
+    /// Three poses of the rigid grid drawn with skinning `mode`, each against
+    /// the two-bone reference skinned on the CPU.
+    void expectLikeTheReference(int mode, bool normals);
+};
 
 /// A lit 16x16 grid with a position scale and bias, bound to `boneCount`
 /// (1 or 2) bones under one joint; the two bones of the reference always
@@ -35,7 +40,9 @@ struct RigidScene {
     Ref<SkinnedMesh> mesh;
     Ref<Camera> camera = new Camera();
 
-    explicit RigidScene(int boneCount) {
+    /// `normals`: whether the VertexBuffer has a normal array (without one
+    /// the default normal is lit, and no bone turns it).
+    explicit RigidScene(int boneCount, bool normals = true) {
         std::vector<std::int16_t> pos;
         std::vector<std::int8_t> nrm;
         for (int r = 0; r < kRows; ++r)
@@ -52,7 +59,7 @@ struct RigidScene {
         n->set(0, kVertices, nrm);
         const float bias[] = {-1.5f, -1.5f, 0.2f};
         vb->setPositions(p, 0.01f, bias);
-        vb->setNormals(n);
+        if (normals) vb->setNormals(n);
         vb->setDefaultColor(0xFFFFFFFF);
         std::vector<int> strips, lengths;
         for (int r = 0; r + 1 < kRows; ++r) {
@@ -125,34 +132,41 @@ double shareOff(const m3gcli::RgbaImage& a, const m3gcli::RgbaImage& b, int thre
     return c.share;
 }
 
+void RigidSkinningTest::expectLikeTheReference(int mode, bool normals) {
+    RigidScene rigid(1, normals), reference(2, normals);
+    int posed = 0;
+    for (float angle : {-30.0f, 45.0f, 110.0f}) {
+        rigid.pose(angle, angle / 200.0f, 1.0f + angle / 100.0f);
+        reference.pose(angle, angle / 200.0f, 1.0f + angle / 100.0f);
+        const Ref<Image2D> expected = target(96, 96, kBackground), actual = target(96, 96, kBackground);
+        reference.render(Graphics3D::SKINNING_CPU, expected.get());
+        const auto before = vk::renderStats();
+        rigid.render(mode, actual.get());
+        const auto after = vk::renderStats();
+        // The grid's vertices are copied to the device once, with the first
+        // pose; later poses change the draw's transform only.
+        if (posed++ > 0) {
+            EXPECT_EQ(after.bufferUploads, before.bufferUploads) << "at " << angle << " degrees";
+        }
+        EXPECT_EQ(after.computeDispatches, before.computeDispatches) << "at " << angle << " degrees";
+        char what[64];
+        std::snprintf(what, sizeof what, "rigid grid at %.0f degrees%s", angle, normals ? "" : ", no normals");
+        // The same triangles, placed by (model-view x bone) p instead of
+        // model-view (bone p): rounding apart, the same pixels.
+        EXPECT_LE(shareOff(toRgba(*actual), toRgba(*expected), 2, what), 0.002) << what;
+        EXPECT_GT(shareOff(toRgba(*actual), toRgba(*target(96, 96, kBackground)), 8, "against the empty target"), 0.15)
+            << "the grid should cover the target";
+    }
+}
+
 }  // namespace
 
 TEST_F(RigidSkinningTest, DrawsLikeTheSkinnedVerticesWithoutUploadsOrDispatches) {
     for (int mode : {Graphics3D::SKINNING_CPU, Graphics3D::SKINNING_COMPUTE}) {
-        SCOPED_TRACE(mode == Graphics3D::SKINNING_CPU ? "CPU skinning" : "compute skinning");
-        RigidScene rigid(1), reference(2);
-        int posed = 0;
-        for (float angle : {-30.0f, 45.0f, 110.0f}) {
-            rigid.pose(angle, angle / 200.0f, 1.0f + angle / 100.0f);
-            reference.pose(angle, angle / 200.0f, 1.0f + angle / 100.0f);
-            const Ref<Image2D> expected = target(96, 96, kBackground), actual = target(96, 96, kBackground);
-            reference.render(Graphics3D::SKINNING_CPU, expected.get());
-            const auto before = vk::renderStats();
-            rigid.render(mode, actual.get());
-            const auto after = vk::renderStats();
-            // The grid's vertices are copied to the device once, with the
-            // first pose; later poses change the draw's transform only.
-            if (posed++ > 0) {
-                EXPECT_EQ(after.bufferUploads, before.bufferUploads) << "at " << angle << " degrees";
-            }
-            EXPECT_EQ(after.computeDispatches, before.computeDispatches) << "at " << angle << " degrees";
-            char what[64];
-            std::snprintf(what, sizeof what, "rigid grid at %.0f degrees", angle);
-            // The same triangles, placed by (model-view x bone) p instead of
-            // model-view (bone p): rounding apart, the same pixels.
-            EXPECT_LE(shareOff(toRgba(*actual), toRgba(*expected), 2, what), 0.002) << what;
-            EXPECT_GT(shareOff(toRgba(*actual), toRgba(*target(96, 96, kBackground)), 8, "against the empty target"), 0.15)
-                << "the grid should cover the target";
+        for (bool normals : {true, false}) {
+            SCOPED_TRACE(mode == Graphics3D::SKINNING_CPU ? "CPU skinning" : "compute skinning");
+            SCOPED_TRACE(normals ? "with normals" : "without normals");
+            expectLikeTheReference(mode, normals);
         }
     }
 }
