@@ -660,7 +660,7 @@ TEST(ObjectDump, TreeLines) {
     sm->addTransform(bone, 1, 0, 3);
     Object3D* r2[] = {sm.get()};
     EXPECT_EQ(dumpTree(r2),
-              "SkinnedMesh #0 submeshes=1 vertices=3 triangles=1 bones=1\n"
+              "SkinnedMesh #0 submeshes=1 vertices=3 triangles=1 bones=1 rigid\n"
               "  (skeleton) Group #4 children=1\n"
               "    Group #5 children=0 bone\n");
 }

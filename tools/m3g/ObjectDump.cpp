@@ -679,7 +679,12 @@ std::string summary(const Object3D* o, const IdMap& ids) {
         add("triangles=" + std::to_string(indices / 3));
     }
     if (auto* m = dynamic_cast<const MorphingMesh*>(o)) add("targets=" + std::to_string(m->getMorphTargetCount()));
-    if (auto* m = dynamic_cast<const SkinnedMesh*>(o)) add("bones=" + std::to_string(m->boneCount()));
+    if (auto* m = dynamic_cast<const SkinnedMesh*>(o)) {
+        add("bones=" + std::to_string(m->boneCount()));
+        // Every vertex on one bone: drawn through it, not skinned (docs/skinning.md).
+        const VertexBuffer* vb = m->getVertexBuffer().get();
+        if (vb && m->influenceTable().rigidBone(static_cast<std::size_t>(vb->getVertexCount())) >= 0) add("rigid");
+    }
     if (auto* sp = dynamic_cast<const Sprite3D*>(o)) {
         add(sp->isScaled() ? "scaled" : "unscaled");
         add("crop=" + std::to_string(sp->getCropX()) + "," + std::to_string(sp->getCropY()) + "," +
