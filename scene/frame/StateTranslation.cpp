@@ -139,21 +139,20 @@ void normalMatrix(const Transform& modelView, float* out) {
 /// skinned position and the normal matrix to the skinned normal (both
 /// products in double, rounded once).
 void withRigidTransform(const skin::PaletteEntry& e, float* modelView, float* normals) {
-    auto multiply = [](float* m, const float* rows, bool translate) {
+    // The entry's three rows as a 4x4 matrix with the bottom row (0, 0, 0,
+    // 1); the normal rows' fourth elements are 0.
+    auto multiply = [](float* m, const float* rows) {
         float out[16];
         for (int c = 0; c < 4; ++c)
             for (int r = 0; r < 4; ++r) {
-                // Column c of the entry as a 4x4 matrix: rows 0..2, then
-                // (0, 0, 0, 1); the normal rows have no translation.
-                double sum = 0.0;
+                double sum = c == 3 ? double{m[12 + r]} : 0.0;
                 for (int k = 0; k < 3; ++k) sum += double{m[k * 4 + r]} * rows[k * 4 + c];
-                if (c == 3) sum += translate ? double{m[12 + r]} : 0.0;
-                out[c * 4 + r] = static_cast<float>(c == 3 && !translate ? m[12 + r] : sum);
+                out[c * 4 + r] = static_cast<float>(sum);
             }
         std::memcpy(m, out, sizeof(out));
     };
-    multiply(modelView, e.position, true);
-    if (normals) multiply(normals, e.normal, false);
+    multiply(modelView, e.position);
+    if (normals) multiply(normals, e.normal);
 }
 
 }  // namespace
