@@ -8,6 +8,8 @@
 #include <m3g/frame/UniformHelpers.h>
 #include <m3g/vk/Vulkan.h>
 
+#include "FrameWait.h"
+
 namespace m3g::vk {
 
 namespace {
@@ -298,7 +300,7 @@ void Renderer::release(const frame::Target& target, std::span<const std::uint64_
     };
     const Clock::time_point submitted = Clock::now();
     target_.submit({cmds, n}, fence_, ending);
-    check(vkWaitForFences(ctx_->device(), 1, &fence_, VK_TRUE, UINT64_MAX), "vkWaitForFences (frame)");
+    check(waitForFence(ctx_->device(), fence_, fenceSpinMicros()), "vkWaitForFences (frame)");
     ctx_->frameWaitNanos += nanos(Clock::now() - submitted);
     ++ctx_->frames;
     counter_.collect();
