@@ -110,6 +110,17 @@ inline Quad pixelQuad(int px0, int py0, int px1, int py1, int size, float z = 0.
     return makeQuad(ndcX(px0, size), ndcY(py1, size), ndcX(px1, size), ndcY(py0, size), z);
 }
 
+/// A grid of `rows` x `cols` vertices (vertex r * cols + c) as triangle
+/// strips, one per pair of neighbouring rows.
+inline m3g::Ref<m3g::TriangleStripArray> gridStrips(int rows, int cols) {
+    std::vector<int> strips, lengths;
+    for (int r = 0; r + 1 < rows; ++r) {
+        for (int c = 0; c < cols; ++c) strips.insert(strips.end(), {r * cols + c, (r + 1) * cols + c});
+        lengths.push_back(cols * 2);
+    }
+    return new m3g::TriangleStripArray(strips, lengths);
+}
+
 /// Per-vertex colours (0xAARRGGBB) in the quad's vertex order.
 inline void setColors(m3g::VertexBuffer& vb, std::initializer_list<std::uint32_t> argb) {
     m3g::Ref<m3g::VertexArray> c(new m3g::VertexArray(static_cast<int>(argb.size()), 4, 1));

@@ -424,11 +424,6 @@ struct SkinScene {
         vb->setPositions(p, 0.001f, {});
         vb->setNormals(nn);
         vb->setColors(cc);
-        std::vector<int> strips, lengths;
-        for (int r = 0; r + 1 < rows; ++r) {
-            for (int c = 0; c < cols; ++c) strips.insert(strips.end(), {r * cols + c, (r + 1) * cols + c});
-            lengths.push_back(cols * 2);
-        }
         Ref<Appearance> app = new Appearance();
         Ref<Material> material = new Material();
         material->setVertexColorTrackingEnable(true);
@@ -437,7 +432,7 @@ struct SkinScene {
         pm->setCulling(PolygonMode::CULL_NONE);
         pm->setTwoSidedLightingEnable(true);
         app->setPolygonMode(pm);
-        skinned = new SkinnedMesh(vb, new TriangleStripArray(strips, lengths), app, skeleton);
+        skinned = new SkinnedMesh(vb, m3gtest::gridStrips(rows, cols), app, skeleton);
         Group* parent = skeleton.get();
         for (int b = 0; b < 3; ++b) {
             Ref<Group> bone = new Group();

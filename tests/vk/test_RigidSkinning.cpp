@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "ImageIO.h"
+#include "SceneKit.h"
 
 using namespace m3g;
 using m3gtest::VkTest;
@@ -61,11 +62,6 @@ struct RigidScene {
         vb->setPositions(p, 0.01f, bias);
         if (normals) vb->setNormals(n);
         vb->setDefaultColor(0xFFFFFFFF);
-        std::vector<int> strips, lengths;
-        for (int r = 0; r + 1 < kRows; ++r) {
-            for (int c = 0; c < kCols; ++c) strips.insert(strips.end(), {r * kCols + c, (r + 1) * kCols + c});
-            lengths.push_back(kCols * 2);
-        }
         Ref<Appearance> app = new Appearance();
         Ref<Material> material = new Material();
         material->setColor(Material::DIFFUSE, 0xFFD08040);
@@ -76,7 +72,7 @@ struct RigidScene {
         pm->setCulling(PolygonMode::CULL_NONE);
         pm->setTwoSidedLightingEnable(true);
         app->setPolygonMode(pm);
-        mesh = new SkinnedMesh(vb, new TriangleStripArray(strips, lengths), app, skeleton);
+        mesh = new SkinnedMesh(vb, m3gtest::gridStrips(kRows, kCols), app, skeleton);
         skeleton->addChild(joint);
         joint->setTranslation(0.2f, -0.1f, 0);
         for (int b = 0; b < boneCount; ++b) {

@@ -146,6 +146,13 @@ PreparedScene prepareScene(const LoadResult& loaded, int width, int height) {
     return s;
 }
 
+int longestSequence(const LoadResult& loaded) {
+    int longest = 0;
+    for (const auto& o : loaded.objects)
+        if (const auto* k = dynamic_cast<const KeyframeSequence*>(o.get())) longest = std::max(longest, k->getDuration());
+    return longest;
+}
+
 std::vector<Camera*> camerasInFileOrder(const LoadResult& loaded) {
     std::vector<Camera*> out;
     for (const auto& o : loaded.objects)

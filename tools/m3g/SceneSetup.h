@@ -28,6 +28,11 @@ struct PreparedScene {
 /// Builds the World for `loaded` at a target of width x height pixels.
 PreparedScene prepareScene(const m3g::LoadResult& loaded, int width, int height);
 
+/// The longest KeyframeSequence duration of a load in milliseconds (0 when
+/// it has none): the length of its animation, as the viewer's timeline and
+/// `m3g bench render --animate` cycle through it.
+int longestSequence(const m3g::LoadResult& loaded);
+
 /// The Cameras of a load, in file order (what `--camera-index` counts).
 std::vector<m3g::Camera*> camerasInFileOrder(const m3g::LoadResult& loaded);
 

@@ -62,14 +62,6 @@ struct BenchRenderArgs {
     bool invocations = false;
 };
 
-/// The longest KeyframeSequence duration among `loaded`'s objects (at least 1 ms).
-int animationPeriod(const m3g::LoadResult& loaded) {
-    int period = 1;
-    for (const auto& o : loaded.objects)
-        if (const auto* k = dynamic_cast<const m3g::KeyframeSequence*>(o.get())) period = std::max(period, k->getDuration());
-    return period;
-}
-
 int benchRender(const BenchRenderArgs& args) {
     int width = 320, height = 240, frames = 100;
     if (!args.size.empty()) parseSizeOption("--size", args.size, width, height);
@@ -94,7 +86,7 @@ int benchRender(const BenchRenderArgs& args) {
             m3g::LoadResult loaded = loadInput(file, false);
             PreparedScene scene = prepareScene(loaded, width, height);
             scene.world->animate(0);
-            const int period = animationPeriod(loaded);
+            const int period = std::max(1, longestSequence(loaded));
             int time = 0;
             m3g::Ref<m3g::Graphics> target(new m3g::Graphics(width, height));
             g->releaseRenderer();  // first frame from a fresh renderer

@@ -96,9 +96,8 @@ void ViewerScene::setup(int width, int height) {
         if (auto* a = dynamic_cast<AnimationController*>(o.get())) controllers_.emplace_back(a);
         if (auto* i = dynamic_cast<Image2D*>(o.get())) images_.emplace_back(i);
         if (auto* t = dynamic_cast<AnimationTrack*>(o.get())) tracks_.push_back({Ref<AnimationTrack>(t), t->getController()});
-        if (auto* k = dynamic_cast<KeyframeSequence*>(o.get()))
-            animationLength_ = std::max(animationLength_, k->getDuration());
     }
+    animationLength_ = m3gcli::longestSequence(loaded_);
     // A camera the auto-framing added is not in the file but is the view.
     if (Ref<Camera> active = w.getActiveCamera();
         active && std::find(cameras_.begin(), cameras_.end(), active) == cameras_.end()) {
